@@ -1,0 +1,34 @@
+"""camcontact: lubricated contacts of machine elements, in physical units.
+
+Importing the package is cheap: it loads no plugin (entry points are looked up on first
+use of a model family) and compiles no numba kernel.
+
+>>> import camcontact as cc
+>>> steel = cc.Material(E="210 GPa", nu=0.3)
+"""
+
+from . import registry
+from .analysis import Analysis, Result
+from .components import Body, LineContact, Lubricant, Material
+from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
+from .units import Q_, ureg
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Analysis",
+    "Body",
+    "ConvergenceError",
+    "ConvergenceWarning",
+    "InputError",
+    "LineContact",
+    "Lubricant",
+    "Material",
+    "PluginLoadWarning",
+    "Q_",
+    "Result",
+    "UnknownModelError",
+    "__version__",
+    "registry",
+    "ureg",
+]

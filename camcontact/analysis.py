@@ -1,0 +1,320 @@
+"""Analysis: compose components and models, run only what the scene asks for.
+
+A *scene* is a component (e.g. :class:`~camcontact.components.LineContact`) plus what the
+user asks of it: the ``outputs`` wanted, the ``models`` chosen per slot (by name, class,
+instance or function) and the physical ``effects`` switched on. The scene's builder (see
+:mod:`camcontact.scenes`) turns it into a graph of :class:`Step` objects that declare
+what they ``require`` and ``provide``. :class:`Analysis` then
+
+1. checks the graph *before running anything*: every requested output must be reachable
+   from the scene's inputs; a missing input is an :class:`~camcontact.errors.InputError`
+   that says which output needs it and how to give it;
+2. runs only the steps needed for the requested outputs, in dependency order;
+3. records, per step, the model name and version used and the wall time, so every report
+   shows what its accuracy cost.
+
+A model slot given as a list (``models={"film": ["grubin", "moes"]}``) makes one *variant*
+per entry; steps that do not depend on the slot run once and are shared.
+
+Examples
+--------
+>>> from camcontact import Analysis, Body, LineContact, Material
+>>> steel = Material(E="210 GPa", nu=0.3)
+>>> contact = LineContact(body1=Body(material=steel, radius="20 mm"),
+...                       body2=Body(material=steel, radius="10 mm"),
+...                       load="1 kN", length="10 mm")
+>>> result = Analysis(contact, outputs=["b", "p_h"]).run()
+>>> [record.step for record in result.records]
+['geometry', 'hertz']
+"""
+
+from __future__ import annotations
+
+import itertools
+import time
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from typing import Any
+
+import attrs
+
+from .errors import InputError
+
+__all__ = ["EFFECTS", "Analysis", "Result", "SceneGraph", "Step", "StepRecord"]
+
+#: Physical effects a scene may switch on (each scene supports a subset).
+EFFECTS = ("elasticity", "piezoviscosity", "compressibility", "thermal", "dynamics", "squeeze", "spin")
+
+
+@attrs.frozen
+class Step:
+    """One computation of a scene graph.
+
+    ``run`` receives a mapping holding (at least) ``requires`` and returns a mapping with
+    every name in ``provides``. ``check`` (optional) validates up front, before anything runs.
+    """
+
+    name: str
+    requires: tuple[str, ...]
+    provides: tuple[str, ...]
+    run: Callable[[Mapping[str, Any]], Mapping[str, Any]] = attrs.field(repr=False)
+    model: str = ""
+    version: str = ""
+    check: Callable[[], None] | None = attrs.field(default=None, repr=False)
+
+
+@attrs.frozen
+class SceneGraph:
+    """What a scene builder returns for one variant."""
+
+    kind: str
+    inputs: Mapping[str, Any]
+    steps: tuple[Step, ...]
+    default_outputs: tuple[str, ...]
+    input_hints: Mapping[str, str] = attrs.field(factory=dict)
+    plotter: Callable[..., Any] | None = attrs.field(default=None, repr=False)
+
+
+@attrs.frozen
+class StepRecord:
+    """What ran: step, model and version, variant, wall time [s]."""
+
+    step: str
+    model: str
+    version: str
+    variant: str
+    wall_time: float
+
+
+# ----------------------------------------------------------------------------- builders
+_BUILDERS: dict[type, Callable[..., SceneGraph]] = {}
+
+
+def scene_builder(component_type: type):
+    """Register the graph builder of a scene component type (used by :mod:`camcontact.scenes`)."""
+
+    def _register(function):
+        _BUILDERS[component_type] = function
+        return function
+
+    return _register
+
+
+def _builder_for(scene: Any) -> Callable[..., SceneGraph]:
+    from . import scenes  # noqa: F401  (registers the built-in scene builders)
+
+    for cls in type(scene).__mro__:
+        if cls in _BUILDERS:
+            return _BUILDERS[cls]
+    kinds = ", ".join(sorted(c.__name__ for c in _BUILDERS))
+    raise InputError(f"Analysis: {type(scene).__name__} is not a scene; scenes are: {kinds}")
+
+
+def _model_label(model: Any) -> str:
+    if isinstance(model, str):
+        return model
+    return getattr(model, "name", None) or getattr(model, "__name__", None) or type(model).__name__
+
+
+# ----------------------------------------------------------------------------- analysis
+class Analysis:
+    """Run a scene: see the module docstring.
+
+    Parameters
+    ----------
+    scene : component
+        A scene component, e.g. :class:`~camcontact.components.LineContact`.
+    outputs : sequence of str, optional
+        Quantities wanted (names of :mod:`camcontact.quantities`); default: the scene's
+        default outputs that its inputs allow.
+    models : mapping, optional
+        Model per slot (e.g. ``{"film": "moes"}``); a list makes one variant per entry.
+    effects : iterable of str, optional
+        Physical effects switched on (default: the scene's defaults).
+    """
+
+    def __init__(
+        self,
+        scene: Any,
+        *,
+        outputs: Sequence[str] | None = None,
+        models: Mapping[str, Any] | None = None,
+        effects: Iterable[str] | None = None,
+    ):
+        self.scene = scene
+        self._builder = _builder_for(scene)
+        self.models = dict(models or {})
+        self.effects = None if effects is None else frozenset(effects)
+        if self.effects is not None:
+            unknown = sorted(self.effects - set(EFFECTS))
+            if unknown:
+                raise InputError(f"Analysis: unknown effects {unknown}; known effects: {', '.join(EFFECTS)}")
+        if outputs is not None and isinstance(outputs, str):
+            outputs = [outputs]
+        self.requested = None if outputs is None else tuple(outputs)
+        self.variants = self._expand_variants()
+        self.plans = {label: self._plan(models_) for label, models_ in self.variants}
+
+    # --------------------------------------------------------------- planning
+    def _expand_variants(self) -> list[tuple[str, dict[str, Any]]]:
+        slots = {k: v for k, v in self.models.items() if isinstance(v, (list, tuple))}
+        if not slots:
+            return [("", dict(self.models))]
+        variants = []
+        for combination in itertools.product(*slots.values()):
+            chosen = dict(self.models)
+            chosen.update(zip(slots, combination))
+            label = ", ".join(_model_label(m) for m in combination)
+            variants.append((label, chosen))
+        return variants
+
+    def _plan(self, models: dict[str, Any]) -> tuple[SceneGraph, tuple[str, ...], list[tuple[Step, tuple]]]:
+        graph = self._builder(self.scene, models=models, effects=self.effects)
+        providers: dict[str, Step] = {}
+        for step in graph.steps:
+            for name in step.provides:
+                if name in providers:
+                    raise RuntimeError(f"scene graph: {name!r} provided by {providers[name].name} and {step.name}")
+                providers[name] = step
+
+        def resolve(key: str, chain: tuple[str, ...]) -> list[str]:
+            """Missing inputs on the way to ``key`` (empty list = reachable)."""
+            if key in graph.inputs:
+                return []
+            if key not in providers:
+                return [key]
+            if key in chain:
+                raise RuntimeError(f"scene graph cycle through {key!r}")
+            missing: list[str] = []
+            for need in providers[key].requires:
+                missing += resolve(need, chain + (key,))
+            return missing
+
+        if self.requested is None:
+            outputs = tuple(o for o in graph.default_outputs if o in providers and not resolve(o, ()))
+        else:
+            outputs = self.requested
+            for output in outputs:
+                if output not in providers and output not in graph.inputs:
+                    known = sorted(set(providers) | set(graph.inputs))
+                    raise InputError(
+                        f"{graph.kind} scene cannot give {output!r}; it gives: {', '.join(known)}"
+                    )
+                missing = resolve(output, ())
+                if missing:
+                    hints = "; ".join(f"{m}: {graph.input_hints.get(m, 'not given by the scene')}" for m in dict.fromkeys(missing))
+                    raise InputError(f"output {output!r} of the {graph.kind} scene needs input the scene does not give ({hints})")
+        order: list[Step] = []
+        seen: set[str] = set()
+
+        def visit(key: str) -> None:
+            if key in graph.inputs or key not in providers:
+                return
+            step = providers[key]
+            if step.name in seen:
+                return
+            for need in step.requires:
+                visit(need)
+            seen.add(step.name)
+            order.append(step)
+
+        for output in outputs:
+            visit(output)
+        for step in order:
+            if step.check is not None:
+                step.check()
+        # a step's signature names it, its model and the signatures of its upstream steps,
+        # so that variants share exactly the steps that do not depend on a varied model
+        signatures: dict[str, tuple] = {}
+        for step in order:
+            upstream = sorted({signatures[providers[k].name] for k in step.requires if k in providers
+                               and k not in graph.inputs}, key=repr)
+            signatures[step.name] = (step.name, step.model, step.version, tuple(upstream))
+        return graph, outputs, [(step, signatures[step.name]) for step in order]
+
+    # --------------------------------------------------------------- running
+    def run(self) -> Result:
+        """Run the planned steps of every variant and return a :class:`Result`."""
+        cache: dict[tuple, Mapping[str, Any]] = {}
+        rows: list[dict[str, Any]] = []
+        records: list[StepRecord] = []
+        outputs_union: list[str] = []
+        graph = None
+        for label, _ in self.variants:
+            graph, outputs, order = self.plans[label]
+            state: dict[str, Any] = dict(graph.inputs)
+            for step, key in order:
+                if key not in cache:
+                    start = time.perf_counter()
+                    produced = dict(step.run(state))
+                    elapsed = time.perf_counter() - start
+                    missing = [p for p in step.provides if p not in produced]
+                    if missing:
+                        raise RuntimeError(f"step {step.name!r} did not provide {missing}")
+                    cache[key] = produced
+                    records.append(StepRecord(step.name, step.model, step.version, label, elapsed))
+                state.update(cache[key])
+            row = {name: state[name] for name in outputs}
+            rows.append(row)
+            outputs_union += [o for o in outputs if o not in outputs_union]
+        if self.requested is None and graph is not None:
+            rank = {name: i for i, name in enumerate(graph.default_outputs)}
+            outputs_union.sort(key=lambda name: rank.get(name, len(rank)))
+        return Result(
+            kind=graph.kind if graph else "",
+            outputs=tuple(outputs_union),
+            variants=tuple(label for label, _ in self.variants),
+            rows=tuple(rows),
+            records=tuple(records),
+            effects=self.effects,
+            plotter=graph.plotter if graph else None,
+            scene=self.scene,
+        )
+
+    def steps(self, variant: str | None = None) -> list[str]:
+        """Names of the steps that :meth:`run` will execute (for the first or a given variant)."""
+        label = self.variants[0][0] if variant is None else variant
+        return [step.name for step, _ in self.plans[label][2]]
+
+
+@attrs.frozen
+class Result:
+    """Outcome of :meth:`Analysis.run`: values in SI, the record of what ran, reports and plots."""
+
+    kind: str
+    outputs: tuple[str, ...]
+    variants: tuple[str, ...]
+    rows: tuple[dict[str, Any], ...] = attrs.field(repr=False)
+    records: tuple[StepRecord, ...] = attrs.field(repr=False)
+    effects: frozenset | None
+    plotter: Callable[..., Any] | None = attrs.field(default=None, repr=False, eq=False)
+    scene: Any = attrs.field(default=None, repr=False, eq=False)
+
+    def __getitem__(self, name: str) -> Any:
+        """SI value of ``name`` (a list with one entry per variant when there are several)."""
+        if name not in self.outputs:
+            raise KeyError(f"{name!r} is not among the outputs {self.outputs}")
+        values = [row.get(name) for row in self.rows]
+        return values[0] if len(values) == 1 else values
+
+    def to_frame(self, units: Mapping[str, str] | None = None):
+        """pandas DataFrame, one row per variant, columns ``"name [unit]"`` (see :mod:`camcontact.report`)."""
+        from .report import result_frame
+
+        return result_frame(self, units)
+
+    def steps_frame(self):
+        """pandas DataFrame of the steps that ran: model, version, variant, wall time [s]."""
+        from .report import steps_frame
+
+        return steps_frame(self)
+
+    @property
+    def wall_time(self) -> float:
+        """Total wall time of the steps that ran [s]."""
+        return sum(record.wall_time for record in self.records)
+
+    def plot(self, **kwargs: Any):
+        """Plot the result (needs matplotlib, the ``plot`` extra); returns the Figure."""
+        if self.plotter is None:
+            raise InputError(f"the {self.kind} scene has no plot")
+        return self.plotter(self, **kwargs)

@@ -1,0 +1,112 @@
+"""A lubricated line contact between two bodies: the first scene of camcontact."""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from ..errors import InputError
+from ..units import Component, Quantity, above_absolute_zero, in_range, non_negative, number_field, positive, quantity_field
+from .lubricant import Lubricant
+from .material import Material
+
+__all__ = ["Body", "LineContact"]
+
+
+def _instance_of(cls):
+    def _validate(instance, attribute, value):
+        if not isinstance(value, cls):
+            raise InputError(
+                f"{type(instance).__name__}.{attribute.name} = {value!r}: expected a {cls.__name__}"
+            )
+
+    return _validate
+
+
+@attrs.frozen(kw_only=True)
+class Body(Component):
+    """One body of a contact: material, curvature in the rolling plane, surface speed, roughness.
+
+    Parameters
+    ----------
+    material : Material
+    radius : Quantity or str, optional
+        Radius of curvature in the rolling plane [length] (> 0); None for a flat surface.
+    concave : bool
+        True for a concave surface (e.g. an outer raceway); the radius then counts negative.
+    speed : Quantity or str
+        Surface speed in the rolling direction [velocity] (sign gives the direction).
+    roughness : Quantity or str, optional
+        RMS roughness Rq [length] (>= 0), needed for Lambda.
+    name : str
+    """
+
+    name: str = "body"
+    material: Material = attrs.field(validator=_instance_of(Material))
+    radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    concave: bool = False
+    speed: Quantity = quantity_field("[velocity]", default="0 m/s")
+    roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
+
+    def __attrs_post_init__(self) -> None:
+        if self.concave and self.radius is None:
+            raise InputError(f"Body {self.name!r}: concave=True needs a radius (a flat surface is neither)")
+
+    @property
+    def signed_radius(self) -> float:
+        """Radius [m], negative when concave, inf when flat."""
+        if self.radius is None:
+            return math.inf
+        return -self.si.radius if self.concave else self.si.radius
+
+
+@attrs.frozen(kw_only=True)
+class LineContact(Component):
+    """A lubricated line contact (two cylinders, or cylinder on plane).
+
+    Load is given as ``load`` with ``length`` (total force over the contact length) or as
+    ``load_per_length`` (``length`` then optional).
+
+    Parameters
+    ----------
+    body1, body2 : Body
+    load : Quantity or str, optional
+        Normal force [N] (> 0), with ``length``.
+    length : Quantity or str, optional
+        Effective contact length [m] (> 0).
+    load_per_length : Quantity or str, optional
+        Normal load per unit length [N/m] (> 0).
+    lubricant : Lubricant, optional
+        Needed for film outputs.
+    temperature : Quantity or str, optional
+        Bulk (inlet) lubricant temperature, needed when the viscosity depends on temperature.
+    friction_coefficient : float, optional
+        Surface traction coefficient for the subsurface stresses (0 <= mu <= 1); default 0.
+    name : str
+    """
+
+    name: str = "line contact"
+    body1: Body = attrs.field(validator=_instance_of(Body))
+    body2: Body = attrs.field(validator=_instance_of(Body))
+    load: Quantity = quantity_field("[force]", optional=True, validators=[positive("N")])
+    length: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    load_per_length: Quantity = quantity_field("[force]/[length]", optional=True, validators=[positive("N/m")])
+    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(_instance_of(Lubricant)))
+    temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
+    friction_coefficient: float = number_field(default=0.0, validators=[in_range(0.0, 1.0)])
+
+    def __attrs_post_init__(self) -> None:
+        where = f"LineContact {self.name!r}"
+        if self.load_per_length is None:
+            if self.load is None or self.length is None:
+                raise InputError(f"{where}: give load and length, or load_per_length")
+        elif self.load is not None:
+            raise InputError(f"{where}: give load (with length) or load_per_length, not both")
+        if self.body1.radius is None and self.body2.radius is None:
+            raise InputError(f"{where}: both bodies are flat; a line contact needs at least one curved body")
+
+    @property
+    def w(self) -> float:
+        """Load per unit length [N/m]."""
+        return self.si.load_per_length if self.load_per_length is not None else self.si.load / self.si.length

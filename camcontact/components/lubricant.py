@@ -1,0 +1,336 @@
+"""Lubricant: viscosity data, pressure–viscosity data and the laws that use them.
+
+A :class:`Lubricant` is pure data, validated at construction. :meth:`Lubricant.at` evaluates
+it at a temperature and returns a :class:`LubricantState` of SI floats plus the resolved
+law objects, which is what models use.
+
+Viscosity can be given in one of four ways:
+
+1. ``eta0`` (dynamic) with an optional ``reference_temperature``: the viscosity is known at
+   that temperature only (or, without a reference temperature, assumed the same at any);
+2. ``nu40`` and ``nu100`` (kinematic, ISO grade data) with ``density``: a viscosity–temperature
+   law (``walther`` by default) is fitted through them;
+3. ``viscosity_data``: (temperature, viscosity) pairs, kinematic or dynamic, for laws that
+   need more points (``vogel`` needs three);
+4. none of these, with the ``roelands`` law and both ``alpha`` and ``roelands_z``: eta0
+   follows from the Roelands consistency relation (Tsuha 2015 Eq. 4.6).
+
+Pressure–viscosity: ``alpha`` [1/pressure] or (Roelands only) ``roelands_z``; with z given,
+alpha follows eta0(T) through the consistency relation. Density is taken independent of
+temperature (as Delabenetta 2021 Eq. 35); its pressure dependence is the ``density_law``.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Mapping
+from typing import Any
+
+import attrs
+import numpy as np
+import pint
+
+from .. import registry
+from ..errors import InputError
+from ..models.base import DensityLaw, ViscosityPressureLaw, ViscosityTemperatureLaw
+from ..models.viscosity_pressure import roelands_consistent
+from ..units import (
+    Component,
+    Quantity,
+    above_absolute_zero,
+    format_quantity,
+    in_range,
+    non_negative,
+    number_field,
+    positive,
+    quantity_field,
+    si_value,
+    to_quantity,
+)
+
+__all__ = ["Lubricant", "LubricantState"]
+
+_T40 = 313.15
+_T100 = 373.15
+
+
+def _viscosity_points(value: Any, instance: Any, field: attrs.Attribute) -> tuple:
+    """Convert {T: viscosity} or [(T, viscosity), ...] to a tuple of Quantity pairs."""
+    where = f"{type(instance).__name__}.{field.name}"
+    if value is None:
+        return ()
+    pairs = list(value.items()) if isinstance(value, Mapping) else list(value)
+    points = []
+    for i, pair in enumerate(pairs):
+        try:
+            temperature, viscosity = pair
+        except (TypeError, ValueError):
+            raise InputError(f"{where}[{i}] = {pair!r}: expected a (temperature, viscosity) pair") from None
+        t = to_quantity(temperature, "[temperature]", where=f"{where}[{i}] temperature")
+        v = _viscosity_quantity(viscosity, f"{where}[{i}] viscosity")
+        points.append((t, v))
+    kinds = {_is_kinematic(v) for _, v in points}
+    if len(kinds) > 1:
+        raise InputError(f"{where}: mix of kinematic and dynamic viscosities; give all of one kind")
+    return tuple(points)
+
+
+def _viscosity_quantity(value: Any, where: str) -> pint.Quantity:
+    try:
+        quantity = to_quantity(value, "[kinematic_viscosity]", where=where)
+    except InputError:
+        quantity = to_quantity(value, "[viscosity]", where=where)
+    if not si_value(quantity) > 0:
+        raise InputError(f"{where} = {format_quantity(quantity)} must be > 0")
+    return quantity
+
+
+def _is_kinematic(quantity: pint.Quantity) -> bool:
+    return quantity.check("[kinematic_viscosity]")
+
+
+@attrs.frozen
+class LubricantState:
+    """A lubricant evaluated at one temperature (SI floats) with its resolved laws."""
+
+    name: str
+    temperature: float | None  #: [K], None for an isothermal lubricant
+    eta0: float  #: dynamic viscosity at ambient pressure [Pa*s]
+    kinematic_viscosity: float | None  #: [m^2/s]
+    density: float | None  #: at ambient pressure [kg/m^3]
+    alpha: float | None  #: pressure–viscosity coefficient [1/Pa]
+    roelands_z: float | None  #: Roelands index [-] (roelands law only)
+    thermoviscous_coefficient: float | None  #: beta = -d ln(nu)/dT [1/K]
+    thermal_conductivity: float | None  #: [W/(m K)]
+    specific_heat: float | None  #: [J/(kg K)]
+    pressure_law: ViscosityPressureLaw
+    density_law: DensityLaw
+
+    def _alpha(self) -> float:
+        if self.alpha is None:
+            raise InputError(
+                f"Lubricant {self.name!r} has no pressure–viscosity data: give alpha "
+                "(or roelands_z), or switch the 'piezoviscosity' effect off"
+            )
+        return self.alpha
+
+    def log_viscosity_ratio(self, pressure):
+        """ln(eta/eta0) [-] at gauge pressure [Pa]."""
+        return self.pressure_law.log_viscosity_ratio(pressure, self.eta0, self._alpha())
+
+    def viscosity(self, pressure):
+        """Dynamic viscosity [Pa*s] at gauge pressure [Pa]."""
+        return self.pressure_law.viscosity(pressure, self.eta0, self._alpha())
+
+    def density_ratio(self, pressure):
+        """rho(p)/rho0 [-] at gauge pressure [Pa]."""
+        return self.density_law.density_ratio(pressure)
+
+
+@attrs.frozen(kw_only=True)
+class Lubricant(Component):
+    """A Newtonian lubricant (oil, or the base oil of a grease).
+
+    Parameters
+    ----------
+    name : str
+        Label used in reports.
+    eta0 : Quantity or str, optional
+        Dynamic viscosity at ambient pressure [Pa*s] at ``reference_temperature``.
+    reference_temperature : Quantity or str, optional
+        Temperature at which ``eta0`` holds (e.g. ``"40 degC"``).
+    nu40, nu100 : Quantity or str, optional
+        Kinematic viscosities at 40 °C and 100 °C (e.g. ``"575 cSt"``); need ``density``.
+    viscosity_data : mapping or sequence of pairs, optional
+        (temperature, viscosity) points, all kinematic or all dynamic.
+    density : Quantity or str, optional
+        Density at ambient pressure [kg/m^3] (needed for kinematic data).
+    alpha : Quantity or str, optional
+        Pressure–viscosity coefficient [1/Pa], e.g. ``"2.2e-8 1/Pa"`` or ``"22 1/GPa"``.
+    roelands_z : float, optional
+        Roelands index z (with ``viscosity_pressure_law="roelands"``).
+    viscosity_pressure_law : str
+        ``"roelands"`` (default) or ``"barus"``, or any plugin of kind ``"pressure"``.
+    viscosity_temperature_law : str
+        ``"walther"`` (default, ASTM D341), ``"vogel"``, or any plugin of kind ``"temperature"``.
+    density_law : str
+        ``"dowson_higginson"`` (default) or ``"incompressible"``.
+    thermal_conductivity : Quantity or str, optional
+        [W/(m K)], needed by the ``thermal`` effect.
+    specific_heat : Quantity or str, optional
+        [J/(kg K)].
+
+    Examples
+    --------
+    Tsuha (2015): alpha = 2.2e-8 1/Pa and z = 0.68, eta0 from the consistency relation:
+
+    >>> oil = Lubricant(alpha="2.2e-8 1/Pa", roelands_z=0.68)
+    >>> round(oil.at(None).eta0, 6)
+    0.035835
+    """
+
+    name: str = "lubricant"
+    eta0: Quantity = quantity_field("[viscosity]", optional=True, validators=[positive("Pa*s")])
+    reference_temperature: Quantity = quantity_field(
+        "[temperature]", optional=True, validators=[above_absolute_zero()]
+    )
+    nu40: Quantity = quantity_field("[kinematic_viscosity]", optional=True, validators=[positive("m^2/s")])
+    nu100: Quantity = quantity_field("[kinematic_viscosity]", optional=True, validators=[positive("m^2/s")])
+    viscosity_data: tuple = attrs.field(
+        default=(),
+        converter=attrs.Converter(_viscosity_points, takes_self=True, takes_field=True),
+        repr=lambda points: "(" + ", ".join(f"({format_quantity(t)}, {format_quantity(v)})" for t, v in points) + ")",
+        eq=False,
+        metadata={"doc": "(temperature, viscosity) points"},
+    )
+    density: Quantity = quantity_field("[density]", optional=True, validators=[positive("kg/m^3")])
+    alpha: Quantity = quantity_field("1/[pressure]", optional=True, validators=[non_negative("1/Pa")])
+    roelands_z: float = number_field(
+        optional=True, validators=[in_range(0.0, 2.0, lower_inclusive=False)]
+    )
+    viscosity_pressure_law: str = "roelands"
+    viscosity_temperature_law: str = "walther"
+    density_law: str = "dowson_higginson"
+    thermal_conductivity: Quantity = quantity_field(
+        "[power]/[length]/[temperature]", optional=True, validators=[positive("W/(m K)")]
+    )
+    specific_heat: Quantity = quantity_field(
+        "[energy]/[mass]/[temperature]", optional=True, validators=[positive("J/(kg K)")]
+    )
+
+    # ------------------------------------------------------------------ validation
+    def __attrs_post_init__(self) -> None:
+        where = f"Lubricant {self.name!r}"
+        self._law("viscosity_pressure_law", "pressure")
+        self._law("viscosity_temperature_law", "temperature")
+        registry.get_class("density_laws", self.density_law)
+        if (self.nu40 is None) != (self.nu100 is None):
+            raise InputError(f"{where}: give both nu40 and nu100 (or neither)")
+        sources = [
+            label
+            for label, present in (
+                ("eta0", self.eta0 is not None),
+                ("nu40/nu100", self.nu40 is not None),
+                ("viscosity_data", bool(self.viscosity_data)),
+            )
+            if present
+        ]
+        if len(sources) > 1:
+            raise InputError(f"{where}: viscosity given several ways ({', '.join(sources)}); give one")
+        if self.roelands_z is not None and self.viscosity_pressure_law != "roelands":
+            raise InputError(
+                f"{where}: roelands_z = {self.roelands_z} applies only to viscosity_pressure_law='roelands' "
+                f"(got {self.viscosity_pressure_law!r}); give alpha instead"
+            )
+        if not sources:
+            if not (self.viscosity_pressure_law == "roelands" and self.alpha is not None and self.roelands_z is not None):
+                raise InputError(
+                    f"{where}: no viscosity given; give eta0, nu40 and nu100, viscosity_data, or "
+                    "(with the roelands law) both alpha and roelands_z"
+                )
+        elif self.alpha is not None and self.roelands_z is not None:
+            raise InputError(
+                f"{where}: give alpha or roelands_z, not both: with a viscosity they are tied by the "
+                "Roelands consistency relation"
+            )
+        if self.eta0 is None and self.reference_temperature is not None:
+            raise InputError(f"{where}: reference_temperature applies to eta0, which is not given")
+        kinematic = self.nu40 is not None or (self.viscosity_data and _is_kinematic(self.viscosity_data[0][1]))
+        if kinematic and self.density is None:
+            raise InputError(f"{where}: kinematic viscosity data need the density to give dynamic viscosity")
+        points = self._points()
+        if points is not None:
+            law = registry.get_class("viscosity_laws", self.viscosity_temperature_law)
+            if len(points[0]) < law.points_needed:
+                raise InputError(
+                    f"{where}: viscosity_temperature_law {self.viscosity_temperature_law!r} needs "
+                    f"{law.points_needed} viscosity points, the data give {len(points[0])}; add "
+                    "viscosity_data or choose 'walther'"
+                )
+
+    def _law(self, field: str, kind: str):
+        name = getattr(self, field)
+        cls = registry.get_class("viscosity_laws", name)
+        if getattr(cls, "kind", None) != kind:
+            options = [n for n in registry.available("viscosity_laws")
+                       if getattr(registry.get_class("viscosity_laws", n), "kind", None) == kind]
+            raise InputError(
+                f"Lubricant.{field} = {name!r} is a {getattr(cls, 'kind', '?')} law; "
+                f"{kind} laws: {', '.join(options)}"
+            )
+        return cls
+
+    def _points(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """(temperatures [K], kinematic-or-dynamic viscosities [SI]) of the temperature law."""
+        if self.nu40 is not None:
+            return np.array([_T40, _T100]), np.array([self.si.nu40, self.si.nu100])
+        if self.viscosity_data:
+            return (np.array([si_value(t) for t, _ in self.viscosity_data]),
+                    np.array([si_value(v) for _, v in self.viscosity_data]))
+        return None
+
+    @functools.cached_property
+    def temperature_law(self) -> ViscosityTemperatureLaw | None:
+        """The viscosity–temperature law fitted to the data (None without temperature data)."""
+        points = self._points()
+        if points is None:
+            return None
+        return registry.get("viscosity_laws", self.viscosity_temperature_law).fit(*points)
+
+    @property
+    def isothermal(self) -> bool:
+        """True when the viscosity does not depend on temperature (no temperature data)."""
+        return self._points() is None and self.reference_temperature is None
+
+    # ------------------------------------------------------------------ evaluation
+    def at(self, temperature: Any) -> LubricantState:
+        """The lubricant at ``temperature`` (Quantity/str; None for an isothermal lubricant)."""
+        if temperature is None:
+            return self.state(None)
+        quantity = to_quantity(temperature, "[temperature]", where=f"Lubricant {self.name!r} temperature")
+        return self.state(si_value(quantity))
+
+    def state(self, temperature: float | None) -> LubricantState:
+        """:meth:`at` on SI input: temperature [K] or None."""
+        where = f"Lubricant {self.name!r}"
+        if temperature is not None and not temperature > 0:
+            raise InputError(f"{where}: temperature {temperature!r} K must be above absolute zero")
+        pressure_law = registry.get("viscosity_laws", self.viscosity_pressure_law)
+        density_law = registry.get("density_laws", self.density_law)
+        law = self.temperature_law
+        kinematic = beta = None
+        density = self.si.density
+        if law is not None:
+            if temperature is None:
+                raise InputError(f"{where}: the viscosity depends on temperature; give the temperature")
+            value = law.viscosity(temperature)
+            beta = law.thermoviscous_coefficient(temperature)
+            points_kinematic = self.nu40 is not None or _is_kinematic(self.viscosity_data[0][1])
+            if points_kinematic:
+                kinematic, eta0 = value, value * density
+            else:
+                eta0 = value
+                kinematic = eta0 / density if density else None
+        elif self.eta0 is not None:
+            reference = self.si.reference_temperature
+            if reference is not None and temperature is not None and abs(temperature - reference) > 1e-9:
+                raise InputError(
+                    f"{where}: viscosity known only at {format_quantity(self.reference_temperature)} "
+                    f"(eta0); give nu40/nu100 or viscosity_data to evaluate it at {temperature - 273.15:.6g} °C"
+                )
+            eta0 = self.si.eta0
+            kinematic = eta0 / density if density else None
+        else:  # Roelands consistency: eta0 from alpha and z
+            eta0, _, _ = roelands_consistent(alpha=self.si.alpha, z=self.roelands_z, law=pressure_law)
+            kinematic = eta0 / density if density else None
+        alpha, z = self.si.alpha, self.roelands_z
+        if self.viscosity_pressure_law == "roelands" and (alpha is not None or z is not None):
+            eta0, alpha, z = roelands_consistent(eta0=eta0, alpha=alpha, z=z, law=pressure_law)
+        return LubricantState(
+            name=self.name, temperature=temperature, eta0=float(eta0),
+            kinematic_viscosity=None if kinematic is None else float(kinematic),
+            density=density, alpha=alpha, roelands_z=z,
+            thermoviscous_coefficient=None if beta is None else float(beta),
+            thermal_conductivity=self.si.thermal_conductivity, specific_heat=self.si.specific_heat,
+            pressure_law=pressure_law, density_law=density_law,
+        )

@@ -1,0 +1,1 @@
+"""Contact mechanics: geometry, Hertz line and elliptical contact, subsurface stresses, roughness."""

@@ -1,0 +1,233 @@
+"""Film-thickness formulas for line contacts (family ``film_models``, geometry ``"line"``).
+
+All take the reduced radius ``R`` [m], load per unit length ``w`` [N/m], reduced modulus
+``E_reduced`` = E' [Pa], entrainment speed ``u_m`` = (u1+u2)/2 [m/s], ``eta0`` [Pa*s] and
+``alpha`` [1/Pa], and return films in metres together with the dimensionless groups
+(Hamrock U, G, W'; see :mod:`camcontact.ehl.groups`):
+
+============== ======================================================= ==============
+name           formula (H = h/R)                                        provides
+============== ======================================================= ==============
+grubin         H = 1.95 (G U)^(8/11) W'^(-1/11)                          h_c
+dowson_higg... H_min = 2.65 U^0.70 G^0.54 W'^-0.13                       h_min
+dowson_toyoda  H_c = 3.06 U^0.69 G^0.56 W'^-0.10                         h_c
+pan_hamrock    H_min = 1.714 W'^-0.128 U^0.694 G^0.568,                  h_min, h_c
+               H_c = 2.922 W'^-0.166 U^0.692 G^0.470
+moes           Moes (1992) interpolation over the four EHL regimes       h_c
+============== ======================================================= ==============
+"""
+
+from __future__ import annotations
+
+from typing import ClassVar
+
+import attrs
+import numpy as np
+
+from ..ehl.groups import hamrock_line, moes_line
+from ..errors import InputError
+from ..registry import builtin
+from .base import FilmModel
+
+__all__ = ["DowsonHigginson", "DowsonToyoda", "Grubin", "LinePowerLaw", "Moes", "PanHamrock"]
+
+LINE_INPUTS = ("R", "w", "E_reduced", "u_m", "eta0", "alpha")
+
+
+def _line_groups(R, w, E_reduced, u_m, eta0, alpha, model: str) -> tuple:
+    u = np.asarray(u_m, dtype=float)
+    if np.any(u == 0.0):
+        raise InputError(
+            f"film model {model!r}: entrainment speed u_m = 0 gives no steady EHL film "
+            "(the film then lives on squeeze alone; use a transient solution)"
+        )
+    for label, value in (("R", R), ("w", w), ("E_reduced", E_reduced), ("eta0", eta0)):
+        if np.any(np.asarray(value, dtype=float) <= 0.0):
+            raise InputError(f"film model {model!r}: {label} = {value!r} must be > 0")
+    if np.any(np.asarray(alpha, dtype=float) < 0.0):
+        raise InputError(f"film model {model!r}: alpha = {alpha!r} must be >= 0")
+    return hamrock_line(w, R, E_reduced, u, eta0, alpha)
+
+
+class LinePowerLaw(FilmModel):
+    """A line-contact film formula of power-law form H = c U^a G^b W'^d.
+
+    Subclasses set ``terms``: ``{"h_c" or "h_min": (c, a, b, d)}``.
+    """
+
+    geometry = "line"
+    requires = LINE_INPUTS
+    terms: ClassVar[dict[str, tuple[float, float, float, float]]] = {}
+
+    def evaluate(self, R, w, E_reduced, u_m, eta0, alpha):
+        """Films [m] and groups for R [m], w [N/m], E' [Pa], u_m [m/s], eta0 [Pa*s], alpha [1/Pa]."""
+        U, G, W = _line_groups(R, w, E_reduced, u_m, eta0, alpha, self.name)
+        if np.any(np.asarray(G) == 0.0):
+            raise InputError(
+                f"film model {self.name!r} is fitted to piezoviscous solutions and gives no film at "
+                "alpha = 0; use 'moes' for an isoviscous scene"
+            )
+        result = {"U": U, "G": G, "W": W}
+        for quantity, (c, a, b, d) in self.terms.items():
+            result[quantity] = c * U**a * G**b * W**d * R
+        return result
+
+
+@builtin
+class Grubin(LinePowerLaw):
+    """Grubin (1949) inlet-zone estimate of the central film of a line contact.
+
+    .. math:: \\frac{h_c}{R} = 1.95\\,(G U)^{8/11}\\,W'^{-1/11}
+
+    Delabenetta (2021) Eq. 40 writes it as 0.975 R_x (UG)^0.727 W^-0.091 with R_x = 2R and
+    attributes it to Dowson–Higginson (its erratum 12).
+
+    References
+    ----------
+    Grubin, A.N. (1949) TsNIITMASh book 30, Moscow (DSIR translation 337); as in Saccheto
+    (2008) Eq. 4.41 and Delabenetta (2021) Eq. 40.
+    """
+
+    name = "grubin"
+    reference = "Grubin (1949) TsNIITMASh 30; Saccheto (2008) Eq. 4.41; Delabenetta (2021) Eq. 40"
+    provides = ("h_c",)
+    terms = {"h_c": (1.95, 8.0 / 11.0, 8.0 / 11.0, -1.0 / 11.0)}
+    validity = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+
+
+@builtin
+class DowsonHigginson(LinePowerLaw):
+    """Dowson–Higginson (1977) minimum film of an isothermal line contact.
+
+    .. math:: \\frac{h_{min}}{R} = 2.65\\,U^{0.70}\\,G^{0.54}\\,W'^{-0.13}
+
+    References
+    ----------
+    Dowson, D. & Higginson, G.R. (1977) Elasto-hydrodynamic Lubrication, SI ed., Pergamon;
+    Delabenetta (2021) Eq. 41 (in R_x = 2R notation: 1.325 R_x ...); Tsuha (2015) §2.12 check.
+    Validity: Dowson's ranges W' 3e-5..3e-4 and U 1e-13..1e-8 (Saccheto 2008 §4.2).
+    """
+
+    name = "dowson_higginson"
+    reference = "Dowson & Higginson (1977) Elasto-hydrodynamic Lubrication; Delabenetta (2021) Eq. 41"
+    provides = ("h_min",)
+    terms = {"h_min": (2.65, 0.70, 0.54, -0.13)}
+    validity = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+
+
+@builtin
+class DowsonToyoda(LinePowerLaw):
+    """Dowson–Toyoda (1979) central film of an isothermal line contact.
+
+    .. math:: \\frac{h_c}{R} = 3.06\\,U^{0.69}\\,G^{0.56}\\,W'^{-0.10}
+
+    References
+    ----------
+    Dowson, D. & Toyoda, S. (1979) A central film thickness formula for elastohydrodynamic
+    line contacts, Proc. 5th Leeds–Lyon Symp., 60–65.
+    """
+
+    name = "dowson_toyoda"
+    reference = "Dowson & Toyoda (1979) Proc. 5th Leeds-Lyon Symp. 60-65"
+    provides = ("h_c",)
+    terms = {"h_c": (3.06, 0.69, 0.56, -0.10)}
+    validity = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+
+
+@builtin
+class PanHamrock(LinePowerLaw):
+    """Pan–Hamrock (1989) minimum and central films of a line contact.
+
+    .. math::
+        \\frac{h_{min}}{R} = 1.714\\,W'^{-0.128}\\,U^{0.694}\\,G^{0.568}, \\qquad
+        \\frac{h_c}{R} = 2.922\\,W'^{-0.166}\\,U^{0.692}\\,G^{0.470}
+
+    References
+    ----------
+    Pan, P. & Hamrock, B.J. (1989) Simple formulas for performance parameters used in
+    elastohydrodynamically lubricated line contacts, J. Tribol. 111:246–251.
+    """
+
+    name = "pan_hamrock"
+    reference = "Pan & Hamrock (1989) J. Tribol. 111:246-251"
+    provides = ("h_min", "h_c")
+    terms = {
+        "h_min": (1.714, 0.694, 0.568, -0.128),
+        "h_c": (2.922, 0.692, 0.470, -0.166),
+    }
+    validity = {"W": (2e-5, 2e-4), "U": (1e-12, 1e-9)}
+
+
+def moes_line_film(M, L, *, elasticity: bool = True):
+    """Moes (1992) dimensionless central film H_c = (h_c/R)(2U)^(-1/2) of a line contact.
+
+    .. math::
+        H = \\left[\\left(H_{RI}^{7/3} + H_{EI}^{7/3}\\right)^{3s/7}
+            + \\left(H_{RP}^{-7/2} + H_{EP}^{-7/2}\\right)^{-2s/7}\\right]^{1/s},
+        \\quad s = \\frac{7 + 8\\,e^{-2 H_{EI}/H_{RI}}}{5}
+
+    with H_RI = 3 M^-1, H_EI = 2.621 M^-1/5, H_RP = 1.287 L^2/3, H_EP = 1.311 M^-1/8 L^3/4.
+    L = 0 gives the isoviscous limits; ``elasticity=False`` the rigid asymptotes (H_EI and
+    H_EP dropped, s = 3).
+    """
+    M = np.asarray(M, dtype=float)
+    L = np.asarray(L, dtype=float)
+    h_ri = 3.0 / M
+    h_rp = 1.287 * L ** (2.0 / 3.0)
+    if elasticity:
+        h_ei = 2.621 * M ** -0.2
+        h_ep = 1.311 * M ** -0.125 * L**0.75
+        s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
+        isoviscous = (h_ri ** (7.0 / 3.0) + h_ei ** (7.0 / 3.0)) ** (3.0 * s / 7.0)
+        with np.errstate(divide="ignore"):
+            piezo_sum = np.where(L > 0.0, h_rp ** -3.5 + h_ep ** -3.5, np.inf)
+    else:
+        s = np.full_like(M, 3.0)
+        isoviscous = h_ri**s
+        with np.errstate(divide="ignore"):
+            piezo_sum = np.where(L > 0.0, h_rp ** -3.5, np.inf)
+    piezoviscous = np.where(np.isinf(piezo_sum), 0.0, piezo_sum ** (-2.0 * s / 7.0))
+    H = (isoviscous + piezoviscous) ** (1.0 / s)
+    return float(H) if H.ndim == 0 else H
+
+
+@builtin
+@attrs.frozen
+class Moes(FilmModel):
+    """Moes (1992) central film of a line contact, valid over all four EHL regimes.
+
+    Film from :func:`moes_line_film` in the Moes groups M = W'(2U)^-1/2, L = G(2U)^1/4,
+    h_c = H R (2U)^1/2. It can represent a scene without piezoviscosity (alpha = 0,
+    L = 0) and without elasticity (rigid asymptotes).
+
+    Parameters
+    ----------
+    piezoviscosity, elasticity : bool
+        Set False to switch the effect off (the Analysis does this from the scene).
+
+    References
+    ----------
+    Moes, H. (1992) Optimum similarity analysis with applications to elastohydrodynamic
+    lubrication, Wear 159:57–66; as given by Venner & Lubrecht (2000) Multilevel Methods
+    in Lubrication, Elsevier, ch. 8.
+    """
+
+    name = "moes"
+    reference = "Moes (1992) Wear 159:57-66; Venner & Lubrecht (2000) ch. 8"
+    geometry = "line"
+    requires = LINE_INPUTS
+    provides = ("h_c",)
+    can_disable = ("piezoviscosity", "elasticity")
+    validity = {"M": (1.0, 1000.0), "L": (0.0, 25.0)}
+
+    piezoviscosity: bool = True
+    elasticity: bool = True
+
+    def evaluate(self, R, w, E_reduced, u_m, eta0, alpha):
+        """Central film [m] and groups for R [m], w [N/m], E' [Pa], u_m [m/s], eta0 [Pa*s], alpha [1/Pa]."""
+        if not self.piezoviscosity:
+            alpha = 0.0 * np.asarray(alpha, dtype=float)
+        U, G, W = _line_groups(R, w, E_reduced, u_m, eta0, alpha, self.name)
+        M, L = moes_line(U, G, W)
+        H = moes_line_film(M, L, elasticity=self.elasticity)
+        return {"h_c": H * R * np.sqrt(2.0 * U), "U": U, "G": G, "W": W, "M": M, "L": L}

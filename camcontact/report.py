@@ -1,0 +1,94 @@
+"""Reports: pandas DataFrames with ``"name [unit]"`` columns, CSV and printed tables."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import pandas as pd
+
+from .errors import InputError
+from .quantities import spec
+from .units import Q_
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .analysis import Result
+
+__all__ = ["column_name", "convert", "result_frame", "steps_frame", "text_table"]
+
+
+def _unit_label(unit: str) -> str:
+    if unit == "":
+        return "-"
+    return f"{Q_(1.0, unit).units:~P}".replace(" ", "")
+
+
+def column_name(name: str, unit: str | None) -> str:
+    """``"h_min [µm]"``; text quantities keep their bare name."""
+    return name if unit is None else f"{name} [{_unit_label(unit)}]"
+
+
+def convert(value: Any, si_unit: str, unit: str, name: str) -> Any:
+    """Convert an SI value (float/array) of quantity ``name`` to ``unit``."""
+    if value is None:
+        return np.nan
+    if si_unit == unit:
+        return value
+    try:
+        return Q_(np.asarray(value, dtype=float), si_unit).to(unit).magnitude
+    except Exception as exc:  # pint errors: wrong dimension or unknown unit
+        raise InputError(f"cannot report {name} [{si_unit}] in {unit!r}: {exc}") from None
+
+
+def result_frame(result: Result, units: Mapping[str, str] | None = None) -> pd.DataFrame:
+    """DataFrame of a :class:`~camcontact.analysis.Result`: one row per variant.
+
+    ``units`` maps quantity names to display units (``{"h_min": "nm"}``); others use the
+    catalogue's display unit.
+    """
+    units = dict(units or {})
+    unknown = sorted(set(units) - set(result.outputs))
+    if unknown:
+        raise InputError(f"units given for {unknown}, which are not outputs of this result {result.outputs}")
+    records = []
+    for label, row in zip(result.variants, result.rows):
+        record: dict[str, Any] = {}
+        if label:
+            record["variant"] = label
+        for name in result.outputs:
+            quantity = spec(name)
+            if quantity.si_unit is None:
+                record[column_name(name, None)] = row.get(name)
+                continue
+            unit = units.get(name, quantity.display_unit)
+            record[column_name(name, unit)] = convert(row.get(name), quantity.si_unit, unit, name)
+        records.append(record)
+    return pd.DataFrame.from_records(records)
+
+
+def steps_frame(result: Result) -> pd.DataFrame:
+    """The step record of a result as a DataFrame (wall time in ms)."""
+    return pd.DataFrame(
+        {
+            "step": [r.step for r in result.records],
+            "model": [r.model for r in result.records],
+            "version": [r.version for r in result.records],
+            "variant": [r.variant for r in result.records],
+            "wall time [ms]": [1e3 * r.wall_time for r in result.records],
+        }
+    )
+
+
+def text_table(frame: pd.DataFrame, transpose: bool = True) -> str:
+    """A readable text table (quantities as rows when ``transpose``), 5 significant digits."""
+    shown = frame.set_index("variant").T if transpose and "variant" in frame else (frame.T if transpose else frame)
+    if transpose and "variant" not in frame:
+        shown.columns = ["value"] * len(shown.columns) if len(shown.columns) == 1 else shown.columns
+
+    def fmt(value: Any) -> str:
+        if isinstance(value, (float, np.floating)):
+            return "nan" if np.isnan(value) else f"{value:.5g}"
+        return str(value)
+
+    return shown.map(fmt).to_string()

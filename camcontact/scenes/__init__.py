@@ -1,0 +1,6 @@
+"""Scene builders: how each scene component becomes a graph of analysis steps.
+
+Importing this package registers the built-in scenes with :mod:`camcontact.analysis`.
+"""
+
+from . import line_contact  # noqa: F401

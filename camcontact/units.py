@@ -1,0 +1,388 @@
+"""Units at the door: the one pint registry, parsing, attrs field helpers and SI views.
+
+camcontact accepts dimensional inputs only as pint Quantities or strings such as
+``"15 mm"`` or ``"85 degC"``. A bare number for a dimensional field, a wrong
+dimension, NaN or infinity raise :class:`~camcontact.errors.InputError` naming the
+class, the field, the value and what is expected. Inside, every component offers a
+cached SI view (:attr:`Component.si`) of plain floats/arrays; no Quantity reaches
+the models or the numba kernels.
+
+Examples
+--------
+>>> from camcontact.units import Q_, to_quantity
+>>> to_quantity("15 mm", "[length]", where="Body.radius").to("m")
+<Quantity(0.015, 'meter')>
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+from collections.abc import Iterable, Iterator, Mapping
+from typing import Any
+
+import attrs
+import numpy as np
+import pint
+
+from .errors import InputError
+
+__all__ = [
+    "Component",
+    "Q_",
+    "Quantity",
+    "SIView",
+    "above_absolute_zero",
+    "format_quantity",
+    "in_range",
+    "non_negative",
+    "number_field",
+    "parse_quantity",
+    "positive",
+    "quantity_field",
+    "si_value",
+    "to_float",
+    "to_quantity",
+    "ureg",
+]
+
+#: The one unit registry of camcontact (also pint's application registry).
+ureg = pint.UnitRegistry()
+pint.set_application_registry(ureg)
+Q_ = ureg.Quantity
+#: type of the Quantity fields of components
+Quantity = pint.Quantity
+
+#: An example unit per dimensionality, used in error messages.
+_EXAMPLE_UNITS = {
+    "[length]": "mm",
+    "[pressure]": "GPa",
+    "1/[pressure]": "1/GPa",
+    "[temperature]": "degC",
+    "[viscosity]": "Pa*s",
+    "[kinematic_viscosity]": "cSt",
+    "[density]": "kg/m^3",
+    "[velocity]": "m/s",
+    "[force]": "N",
+    "[force]/[length]": "N/mm",
+    "1/[time]": "rpm",
+    "[power]/[length]/[temperature]": "W/(m*K)",
+    "[energy]/[mass]/[temperature]": "J/(kg*K)",
+    "[]": "",
+}
+
+_NUMBER_THEN_UNIT = re.compile(
+    r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$"
+)
+
+
+def _dimensionality(dimension: str):
+    return ureg.get_dimensionality(dimension) if dimension != "[]" else ureg.get_dimensionality("")
+
+
+def _example(dimension: str) -> str:
+    unit = _EXAMPLE_UNITS.get(dimension)
+    if unit is None:
+        for key, value in _EXAMPLE_UNITS.items():
+            if key != "[]" and _dimensionality(key) == _dimensionality(dimension):
+                unit = value
+                break
+    return f"'1 {unit}'" if unit else "a plain number"
+
+
+def parse_quantity(text: str, *, where: str = "value") -> pint.Quantity:
+    """Parse ``"15 mm"``, ``"85 degC"``, ``"2.2e-8 1/Pa"`` into a Quantity.
+
+    A leading number followed by a unit expression is split first, so offset
+    units (``degC``) work; anything else is handed to pint's parser.
+    """
+    match = _NUMBER_THEN_UNIT.match(text)
+    try:
+        if match:
+            unit = match.group(2) or "dimensionless"
+            return Q_(float(match.group(1)), unit)
+        return ureg.Quantity(text)
+    except (pint.errors.PintError, AttributeError, TypeError, ValueError, SyntaxError) as exc:
+        raise InputError(f"{where} = {text!r}: cannot read this as a quantity ({exc})") from None
+
+
+def _is_number(value: Any) -> bool:
+    if isinstance(value, bool):
+        return False
+    if isinstance(value, (int, float, np.integer, np.floating)):
+        return True
+    if isinstance(value, np.ndarray) and value.dtype.kind in "iuf":
+        return True
+    if isinstance(value, (list, tuple)) and value and all(_is_number(v) for v in value):
+        return True
+    return False
+
+
+def _finite(magnitude: Any) -> bool:
+    try:
+        return bool(np.all(np.isfinite(np.asarray(magnitude, dtype=float))))
+    except (TypeError, ValueError):
+        return False
+
+
+def to_quantity(value: Any, dimension: str, *, where: str) -> pint.Quantity:
+    """Convert ``value`` to a Quantity of ``dimension`` (e.g. ``"[length]"``) or raise.
+
+    Parameters
+    ----------
+    value : Quantity, str or (magnitude, unit) tuple
+        A bare number is accepted only when ``dimension`` is ``"[]"``.
+    dimension : str
+        A pint dimensionality expression such as ``"[pressure]"`` or ``"1/[pressure]"``.
+    where : str
+        ``"Class.field"``, used in the error message.
+    """
+    if isinstance(value, str):
+        quantity = parse_quantity(value, where=where)
+    elif isinstance(value, pint.Quantity):
+        quantity = value if value._REGISTRY is ureg else Q_(value.magnitude, str(value.units))
+    elif (
+        isinstance(value, tuple)
+        and len(value) == 2
+        and isinstance(value[1], str)
+        and _is_number(value[0])
+    ):
+        quantity = Q_(np.asarray(value[0], dtype=float) if not np.isscalar(value[0]) else value[0], value[1])
+    elif _is_number(value) and dimension == "[]":
+        quantity = Q_(np.asarray(value, dtype=float) if not np.isscalar(value) else float(value), "")
+    elif _is_number(value):
+        raise InputError(
+            f"{where} = {value!r}: a bare number is not accepted for a field of dimension "
+            f"{dimension}; give it with a unit, e.g. {_example(dimension)} or camcontact.Q_(value, unit)"
+        )
+    else:
+        raise InputError(
+            f"{where} = {value!r} (type {type(value).__name__}): expected a quantity of "
+            f"dimension {dimension}, e.g. {_example(dimension)}"
+        )
+    if not quantity.check(_dimensionality(dimension)):
+        raise InputError(
+            f"{where} = {format_quantity(quantity)}: wrong dimension {quantity.dimensionality}; "
+            f"expected {dimension}, e.g. {_example(dimension)}"
+        )
+    if not _finite(quantity.magnitude):
+        raise InputError(f"{where} = {format_quantity(quantity)}: must be finite (got NaN or inf)")
+    return quantity
+
+
+def to_float(value: Any, *, where: str) -> float:
+    """Convert a dimensionless input (number, numeric string or dimensionless Quantity) to float."""
+    if isinstance(value, (str, pint.Quantity)):
+        quantity = to_quantity(value, "[]", where=where)
+        result = float(quantity.to("").magnitude)
+    elif _is_number(value) and np.ndim(value) == 0:
+        result = float(value)
+    else:
+        raise InputError(f"{where} = {value!r}: expected a plain number (dimensionless)")
+    if not math.isfinite(result):
+        raise InputError(f"{where} = {result!r}: must be finite (got NaN or inf)")
+    return result
+
+
+def si_value(quantity: pint.Quantity) -> float | np.ndarray:
+    """Magnitude of ``quantity`` in SI base units (temperatures in kelvin)."""
+    magnitude = quantity.to_base_units().magnitude
+    if np.ndim(magnitude) == 0:
+        return float(magnitude)
+    return np.asarray(magnitude, dtype=float)
+
+
+def format_quantity(quantity: Any) -> str:
+    """Short human form of a Quantity (``'210 GPa'``); other values as ``repr``."""
+    if isinstance(quantity, pint.Quantity):
+        if np.ndim(quantity.magnitude) == 0:
+            return f"{quantity:~P}"
+        magnitude = np.asarray(quantity.magnitude)
+        unit = f"{quantity.units:~P}"
+        return f"array(shape={magnitude.shape}, {magnitude.min():g}..{magnitude.max():g}) {unit}"
+    return repr(quantity)
+
+
+def _quantity_eq(a: Any, b: Any) -> bool:
+    if a is None or b is None:
+        return a is b
+    if isinstance(a, pint.Quantity) and isinstance(b, pint.Quantity):
+        if a.dimensionality != b.dimensionality:
+            return False
+        return bool(np.array_equal(np.asarray(si_value(a)), np.asarray(si_value(b))))
+    return bool(np.array_equal(a, b))
+
+
+# ---------------------------------------------------------------- range validators
+def _name(instance: Any, attribute: attrs.Attribute) -> str:
+    return f"{type(instance).__name__}.{attribute.name}"
+
+
+def _magnitude(value: Any) -> Any:
+    return si_value(value) if isinstance(value, pint.Quantity) else value
+
+
+def in_range(
+    lower: float | None = None,
+    upper: float | None = None,
+    *,
+    lower_inclusive: bool = True,
+    upper_inclusive: bool = True,
+    unit: str = "",
+):
+    """attrs validator: ``lower (<=|<) value (<=|<) upper`` on the SI magnitude.
+
+    ``unit`` is the SI unit of the bounds, printed in the error message.
+    """
+
+    def _validate(instance, attribute, value):
+        if value is None:
+            return
+        magnitude = np.asarray(_magnitude(value), dtype=float)
+        ok = np.ones(magnitude.shape, dtype=bool)
+        if lower is not None:
+            ok &= magnitude >= lower if lower_inclusive else magnitude > lower
+        if upper is not None:
+            ok &= magnitude <= upper if upper_inclusive else magnitude < upper
+        if not bool(np.all(ok)):
+            parts = []
+            if lower is not None:
+                parts.append(f"{lower:g} {'<=' if lower_inclusive else '<'} ")
+            parts.append(attribute.name)
+            if upper is not None:
+                parts.append(f" {'<=' if upper_inclusive else '<'} {upper:g}")
+            allowed = "".join(parts) + (f" [{unit}]" if unit else "")
+            raise InputError(
+                f"{_name(instance, attribute)} = {format_quantity(value)} is out of range; "
+                f"allowed: {allowed}"
+            )
+
+    return _validate
+
+
+def positive(unit: str = ""):
+    """attrs validator: strictly positive (SI magnitude > 0)."""
+    return in_range(0.0, lower_inclusive=False, unit=unit)
+
+
+def non_negative(unit: str = ""):
+    """attrs validator: SI magnitude >= 0."""
+    return in_range(0.0, unit=unit)
+
+
+def above_absolute_zero():
+    """attrs validator: a temperature above 0 K."""
+    return in_range(0.0, lower_inclusive=False, unit="K")
+
+
+# ---------------------------------------------------------------- attrs field helpers
+def quantity_field(
+    dimension: str,
+    *,
+    default: Any = attrs.NOTHING,
+    optional: bool = False,
+    validators: Iterable = (),
+    doc: str = "",
+):
+    """An attrs field that holds a pint Quantity of ``dimension``.
+
+    Accepts Quantities, strings (``"15 mm"``) and ``(magnitude, unit)`` tuples;
+    converts once at construction, checks dimension and finiteness, then runs the
+    range ``validators`` (on the SI magnitude). ``optional=True`` admits ``None``.
+    """
+
+    def _convert(value, instance, field):
+        if value is None and optional:
+            return None
+        where = f"{type(instance).__name__}.{field.name}"
+        if value is None:
+            raise InputError(f"{where} is required (a quantity of dimension {dimension})")
+        return to_quantity(value, dimension, where=where)
+
+    if optional and default is attrs.NOTHING:
+        default = None
+    return attrs.field(
+        default=default,
+        converter=attrs.Converter(_convert, takes_self=True, takes_field=True),
+        validator=list(validators),
+        repr=format_quantity,
+        eq=attrs.cmp_using(eq=_quantity_eq),
+        hash=False,
+        metadata={"dimension": dimension, "doc": doc},
+    )
+
+
+def number_field(
+    *,
+    default: Any = attrs.NOTHING,
+    optional: bool = False,
+    validators: Iterable = (),
+    doc: str = "",
+):
+    """An attrs field for a dimensionless float (rejects NaN, inf and non-numbers)."""
+
+    def _convert(value, instance, field):
+        if value is None and optional:
+            return None
+        return to_float(value, where=f"{type(instance).__name__}.{field.name}")
+
+    if optional and default is attrs.NOTHING:
+        default = None
+    return attrs.field(
+        default=default,
+        converter=attrs.Converter(_convert, takes_self=True, takes_field=True),
+        validator=list(validators),
+        metadata={"dimension": "[]", "doc": doc},
+    )
+
+
+# ---------------------------------------------------------------- SI views
+class SIView(Mapping):
+    """Read-only SI magnitudes of a component's quantity and number fields.
+
+    Attribute and item access both work: ``material.si.E`` or ``material.si["E"]``
+    (floats, or float arrays; temperatures in K; ``None`` for unset optional fields).
+    """
+
+    __slots__ = ("_owner", "_values")
+
+    def __init__(self, owner: str, values: dict[str, Any]):
+        object.__setattr__(self, "_owner", owner)
+        object.__setattr__(self, "_values", dict(values))
+
+    def __getitem__(self, key: str) -> Any:
+        return self._values[key]
+
+    def __getattr__(self, key: str) -> Any:
+        try:
+            return self._values[key]
+        except KeyError:
+            raise AttributeError(f"{self._owner}.si has no field {key!r}") from None
+
+    def __setattr__(self, key: str, value: Any) -> None:
+        raise AttributeError(f"{self._owner}.si is read-only")
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __repr__(self) -> str:
+        inner = ", ".join(f"{k}={v!r}" for k, v in self._values.items())
+        return f"SIView[{self._owner}]({inner})"
+
+
+class Component:
+    """Mixin for attrs components: :attr:`si` is the cached SI view of the fields."""
+
+    @functools.cached_property
+    def si(self) -> SIView:
+        values: dict[str, Any] = {}
+        for field in attrs.fields(type(self)):
+            if "dimension" not in field.metadata:
+                continue
+            value = getattr(self, field.name)
+            values[field.name] = si_value(value) if isinstance(value, pint.Quantity) else value
+        return SIView(type(self).__name__, values)
