@@ -103,8 +103,9 @@ def parse_quantity(text: str, *, where: str = "value") -> pint.Quantity:
             unit = match.group(2) or "dimensionless"
             return Q_(float(match.group(1)), unit)
         return ureg.Quantity(text)
-    except (pint.errors.PintError, AttributeError, TypeError, ValueError, SyntaxError) as exc:
-        raise InputError(f"{where} = {text!r}: cannot read this as a quantity ({exc})") from None
+    except Exception as exc:  # pint's parser raises many kinds (even AssertionError) on odd text
+        reason = str(exc) or type(exc).__name__
+        raise InputError(f"{where} = {text!r}: cannot read this as a quantity ({reason})") from None
 
 
 def _is_number(value: Any) -> bool:

@@ -33,6 +33,7 @@ import pint
 from .. import registry
 from ..errors import InputError
 from ..models.base import DensityLaw, ViscosityPressureLaw, ViscosityTemperatureLaw
+from ..models.pressure_viscosity_coefficient import gold_alpha
 from ..models.viscosity_pressure import roelands_consistent
 from ..units import (
     Component,
@@ -107,7 +108,7 @@ class LubricantState:
     density_law: DensityLaw
 
     def _alpha(self) -> float:
-        if self.alpha is None:
+        if self.alpha is None:  # pragma: no branch
             raise InputError(
                 f"Lubricant {self.name!r} has no pressure–viscosity data: give alpha "
                 "(or roelands_z), or switch the 'piezoviscosity' effect off"
@@ -149,6 +150,11 @@ class Lubricant(Component):
         Pressure–viscosity coefficient [1/Pa], e.g. ``"2.2e-8 1/Pa"`` or ``"22 1/GPa"``.
     roelands_z : float, optional
         Roelands index z (with ``viscosity_pressure_law="roelands"``).
+    alpha_correlation : str, optional
+        ``"gold"``: alpha(T) from the Gold correlation of Delabenetta (2021) Eq. 36 (needs
+        kinematic data fitted by the ``walther`` law); instead of ``alpha``/``roelands_z``.
+    base_oil : str
+        ``"mineral"`` (default) or ``"ester"``: the class of base oil (for ``alpha_correlation``).
     viscosity_pressure_law : str
         ``"roelands"`` (default) or ``"barus"``, or any plugin of kind ``"pressure"``.
     viscosity_temperature_law : str
@@ -188,6 +194,10 @@ class Lubricant(Component):
     roelands_z: float = number_field(
         optional=True, validators=[in_range(0.0, 2.0, lower_inclusive=False)]
     )
+    alpha_correlation: str | None = attrs.field(
+        default=None, validator=attrs.validators.optional(attrs.validators.in_(("gold",)))
+    )
+    base_oil: str = attrs.field(default="mineral", validator=attrs.validators.in_(("mineral", "ester")))
     viscosity_pressure_law: str = "roelands"
     viscosity_temperature_law: str = "walther"
     density_law: str = "dowson_higginson"
@@ -204,6 +214,9 @@ class Lubricant(Component):
         self._law("viscosity_pressure_law", "pressure")
         self._law("viscosity_temperature_law", "temperature")
         registry.get_class("density_laws", self.density_law)
+        kinematic_data = self.nu40 is not None or bool(
+            self.viscosity_data and _is_kinematic(self.viscosity_data[0][1])
+        )
         if (self.nu40 is None) != (self.nu100 is None):
             raise InputError(f"{where}: give both nu40 and nu100 (or neither)")
         sources = [
@@ -233,10 +246,17 @@ class Lubricant(Component):
                 f"{where}: give alpha or roelands_z, not both: with a viscosity they are tied by the "
                 "Roelands consistency relation"
             )
+        if self.alpha_correlation is not None:
+            if self.alpha is not None or self.roelands_z is not None:
+                raise InputError(f"{where}: alpha_correlation replaces alpha and roelands_z; give only one")
+            if self.viscosity_temperature_law != "walther" or not kinematic_data:
+                raise InputError(
+                    f"{where}: alpha_correlation='gold' needs kinematic viscosity data (nu40/nu100 or "
+                    "viscosity_data) fitted with viscosity_temperature_law='walther'"
+                )
         if self.eta0 is None and self.reference_temperature is not None:
             raise InputError(f"{where}: reference_temperature applies to eta0, which is not given")
-        kinematic = self.nu40 is not None or (self.viscosity_data and _is_kinematic(self.viscosity_data[0][1]))
-        if kinematic and self.density is None:
+        if kinematic_data and self.density is None:
             raise InputError(f"{where}: kinematic viscosity data need the density to give dynamic viscosity")
         points = self._points()
         if points is not None:
@@ -324,6 +344,8 @@ class Lubricant(Component):
             eta0, _, _ = roelands_consistent(alpha=self.si.alpha, z=self.roelands_z, law=pressure_law)
             kinematic = eta0 / density if density else None
         alpha, z = self.si.alpha, self.roelands_z
+        if self.alpha_correlation == "gold":
+            alpha = gold_alpha(kinematic / 1e-6, law.m, density / 1000.0, self.base_oil)
         if self.viscosity_pressure_law == "roelands" and (alpha is not None or z is not None):
             eta0, alpha, z = roelands_consistent(eta0=eta0, alpha=alpha, z=z, law=pressure_law)
         return LubricantState(

@@ -74,13 +74,20 @@ class LinePowerLaw(FilmModel):
 
 
 @builtin
+@attrs.frozen
 class Grubin(LinePowerLaw):
     """Grubin (1949) inlet-zone estimate of the central film of a line contact.
 
     .. math:: \\frac{h_c}{R} = 1.95\\,(G U)^{8/11}\\,W'^{-1/11}
 
     Delabenetta (2021) Eq. 40 writes it as 0.975 R_x (UG)^0.727 W^-0.091 with R_x = 2R and
-    attributes it to Dowson–Higginson (its erratum 12).
+    attributes it to Dowson–Higginson (its erratum 12). Its exponents are rounded to three
+    decimals, which lowers the film by about 0.5 %; ``exponent_digits=3`` reproduces that.
+
+    Parameters
+    ----------
+    exponent_digits : int, optional
+        None (default): exact exponents 8/11 and -1/11; 3: rounded as Delabenetta (2021).
 
     References
     ----------
@@ -91,8 +98,16 @@ class Grubin(LinePowerLaw):
     name = "grubin"
     reference = "Grubin (1949) TsNIITMASh 30; Saccheto (2008) Eq. 4.41; Delabenetta (2021) Eq. 40"
     provides = ("h_c",)
-    terms = {"h_c": (1.95, 8.0 / 11.0, 8.0 / 11.0, -1.0 / 11.0)}
     validity = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+
+    exponent_digits: int | None = None
+
+    @property
+    def terms(self):  # type: ignore[override]
+        a, d = 8.0 / 11.0, -1.0 / 11.0
+        if self.exponent_digits is not None:
+            a, d = round(a, self.exponent_digits), round(d, self.exponent_digits)
+        return {"h_c": (1.95, a, a, d)}
 
 
 @builtin

@@ -125,8 +125,7 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
         Step("roughness", ("sigma1", "sigma2"), ("sigma",),
              lambda s: {"sigma": composite_roughness(s["sigma1"], s["sigma2"])}),
     ]
-    if lubricant is not None:
-        steps += _film_steps(contact, models.get("film", DEFAULT_FILM), effects, piezo)
+    steps += _film_steps(contact, models.get("film", DEFAULT_FILM), effects, piezo)
     return SceneGraph(
         kind="line_contact", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS,
         input_hints=HINTS, plotter=plot_line_contact,
@@ -136,7 +135,11 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
 def _kinematics(s):
     u_m = 0.5 * (s["u1"] + s["u2"])
     u_s = s["u1"] - s["u2"]
-    return {"u_m": u_m, "u_s": u_s, "slide_roll_ratio": u_s / u_m if u_m != 0 else np.inf * np.sign(u_s)}
+    if u_m != 0:
+        ratio = u_s / u_m
+    else:  # no entrainment: pure sliding (infinite ratio) or no motion at all (zero)
+        ratio = 0.0 if u_s == 0 else float(np.copysign(np.inf, u_s))
+    return {"u_m": u_m, "u_s": u_s, "slide_roll_ratio": ratio}
 
 
 def _hertz(s):
@@ -170,9 +173,12 @@ def _subsurface(s):
 
 
 def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo: bool) -> list[Step]:
-    lubricant = contact.lubricant
-    density_law = lubricant.density_law if "compressibility" in effects else "incompressible"
-    lubricant_requires = ("lubricant",) if lubricant.isothermal else ("lubricant", "temperature")
+    lubricant = contact.lubricant  # None: the film steps exist, their missing input is reported
+    if lubricant is None:
+        density_law, lubricant_requires = "incompressible", ("lubricant",)
+    else:
+        density_law = lubricant.density_law if "compressibility" in effects else "incompressible"
+        lubricant_requires = ("lubricant",) if lubricant.isothermal else ("lubricant", "temperature")
 
     def run_lubricant(s):
         state = s["lubricant"].state(s.get("temperature"))
@@ -184,7 +190,7 @@ def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo:
         }
 
     def check_piezo():
-        if piezo and lubricant.alpha is None and lubricant.roelands_z is None:
+        if piezo and lubricant is not None and lubricant.alpha is None and lubricant.roelands_z is None and lubricant.alpha_correlation is None:
             raise InputError(
                 f"Lubricant {lubricant.name!r} has no pressure-viscosity data (alpha or roelands_z), which "
                 "the 'piezoviscosity' effect needs; give it or switch the effect off"
@@ -215,6 +221,8 @@ def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo:
     thermal = "thermal" in effects
 
     def check_thermal():
+        if lubricant is None:
+            return
         missing = []
         if lubricant.thermal_conductivity is None:
             missing.append("thermal_conductivity")
@@ -243,7 +251,8 @@ def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo:
         Step("lubricant", lubricant_requires,
              ("lubricant_state", "eta0", "alpha", "roelands_z", "kinematic_viscosity", "thermoviscous_coefficient",
               "lubricant_conductivity", "density_law"),
-             run_lubricant, model=f"{lubricant.viscosity_temperature_law}/{lubricant.viscosity_pressure_law}"),
+             run_lubricant,
+             model="" if lubricant is None else f"{lubricant.viscosity_temperature_law}/{lubricant.viscosity_pressure_law}"),
         Step("ehl_groups", ("w", "R", "E_reduced", "u_m", "eta0", "alpha"),
              ("alpha_effective", "U", "G", "W", "M", "L"), run_groups, check=check_piezo),
         Step("film", (*LINE_INPUTS[:4], "eta0", "alpha_effective", "U", "G", "W", "M", "L"),

@@ -1,0 +1,91 @@
+"""TOML scenes (no code execution) and the camcontact command."""
+
+import pandas as pd
+import pytest
+
+from camcontact.cli import main
+from camcontact.errors import InputError
+from camcontact.scene_file import default_scene_text, load_scene, parse_scene
+
+MINIMAL = """
+scene = "line_contact"
+outputs = ["b", "p_h"]
+[contact]
+load = "1 kN"
+length = "10 mm"
+[contact.body1]
+radius = "20 mm"
+[contact.body1.material]
+E = "210 GPa"
+nu = 0.3
+[contact.body2]
+radius = "10 mm"
+[contact.body2.material]
+E = "210 GPa"
+nu = 0.3
+"""
+
+
+def test_minimal_scene_runs():
+    scene = parse_scene(MINIMAL)
+    result = scene.analysis().run()
+    assert result.outputs == ("b", "p_h")
+
+
+@pytest.mark.parametrize(
+    "edit, pattern",
+    [
+        (("radius = \"20 mm\"", "radiu = \"20 mm\""), r"\[contact\]\.body1: unknown keys \['radiu'\].*allowed: concave, material"),
+        (("E = \"210 GPa\"", "E = 210"), r"Material\.E = 210.*bare number"),
+        (("scene = \"line_contact\"", "scene = \"gearbox\""), "known scene kinds: line_contact"),
+        (("load = \"1 kN\"", "load = \"1 kN\"\nextra = 3"), r"unknown keys \['extra'\]"),
+        (("outputs = [\"b\", \"p_h\"]", "outputs = \"b\""), "outputs must be a list"),
+        (("[contact]", "[contact\n"), "not valid TOML"),
+    ],
+)
+def test_scene_errors_name_the_key(edit, pattern):
+    with pytest.raises(InputError, match=pattern):
+        parse_scene(MINIMAL.replace(*edit))
+
+
+def test_scene_strings_are_never_executed():
+    hostile = MINIMAL.replace('load = "1 kN"', 'load = "__import__(\'os\').system(\'echo pwned\')"')
+    with pytest.raises(InputError):
+        parse_scene(hostile)
+
+
+def test_default_scene_main_job(tmp_path, capsys):
+    csv = tmp_path / "report.csv"
+    assert main(["run", "--csv", str(csv)]) == 0
+    out = capsys.readouterr().out
+    assert "steps ran in" in out and "Delabenetta" in out
+    frame = pd.read_csv(csv)
+    assert list(frame["variant"]) == ["grubin", "dowson_higginson", "dowson_toyoda", "pan_hamrock", "moes"]
+    # Hertz half-width and peak pressure of Delabenetta (2021) Table 7: 186 um and 826.67 MPa
+    assert frame["b [µm]"][0] == pytest.approx(186.24, abs=0.01)
+    assert frame["p_h [MPa]"][0] == pytest.approx(826.67, abs=0.01)
+
+
+def test_cli_scene_file_units_and_plot(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    path = tmp_path / "s.toml"
+    path.write_text(MINIMAL)
+    png = tmp_path / "s.png"
+    assert main(["run", str(path), "--csv", str(tmp_path / "r.csv"), "--units", "p_h=GPa", "--plot", str(png)]) == 0
+    assert "p_h [GPa]" in capsys.readouterr().out
+    assert png.stat().st_size > 1000
+
+
+def test_cli_reports_input_errors_with_exit_code_2(tmp_path, capsys):
+    path = tmp_path / "bad.toml"
+    path.write_text(MINIMAL.replace('E = "210 GPa"', 'E = "210 mm"'))
+    assert main(["run", str(path)]) == 2
+    assert "Material.E = 210" in capsys.readouterr().err
+    assert main(["run", str(tmp_path / "missing.toml")]) == 2
+    assert main(["run", str(path), "--units", "p_h"]) == 2
+
+
+def test_default_scene_is_printable_and_loads(capsys):
+    assert main(["default-scene"]) == 0
+    assert capsys.readouterr().out == default_scene_text()
+    assert load_scene().kind == "line_contact"
