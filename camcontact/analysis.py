@@ -38,6 +38,7 @@ from typing import Any
 import attrs
 
 from .errors import InputError
+from .quantities import QUANTITIES
 
 __all__ = ["EFFECTS", "Analysis", "Result", "SceneGraph", "Step", "StepRecord"]
 
@@ -153,6 +154,14 @@ class Analysis:
         self.requested = None if outputs is None else tuple(outputs)
         self.variants = self._expand_variants()
         self.plans = {label: self._plan(models_) for label, models_ in self.variants}
+        if self.requested is not None:
+            planned = {name for _, outputs, _ in self.plans.values() for name in outputs}
+            for output in self.requested:
+                if output not in planned:
+                    raise InputError(
+                        f"no variant of this analysis can give {output!r} (models: "
+                        f"{', '.join(label for label, _ in self.variants)})"
+                    )
 
     # --------------------------------------------------------------- planning
     def _expand_variants(self) -> list[tuple[str, dict[str, Any]]]:
@@ -192,13 +201,14 @@ class Analysis:
         if self.requested is None:
             outputs = tuple(o for o in graph.default_outputs if o in providers and not resolve(o, ()))
         else:
-            outputs = self.requested
+            outputs = tuple(o for o in self.requested if o in providers or o in graph.inputs)
+            unprovided = [o for o in self.requested if o not in outputs]
+            if unprovided and len(self.variants) == 1:
+                known = sorted(name for name in providers if name in QUANTITIES)
+                raise InputError(
+                    f"{graph.kind} scene cannot give {unprovided[0]!r} with these models; it gives: {', '.join(known)}"
+                )
             for output in outputs:
-                if output not in providers and output not in graph.inputs:
-                    known = sorted(set(providers) | set(graph.inputs))
-                    raise InputError(
-                        f"{graph.kind} scene cannot give {output!r}; it gives: {', '.join(known)}"
-                    )
                 missing = resolve(output, ())
                 if missing:
                     hints = "; ".join(f"{m}: {graph.input_hints.get(m, 'not given by the scene')}" for m in dict.fromkeys(missing))
@@ -256,8 +266,9 @@ class Analysis:
             row = {name: state[name] for name in outputs}
             rows.append(row)
             outputs_union += [o for o in outputs if o not in outputs_union]
-        if self.requested is None and graph is not None:
-            rank = {name: i for i, name in enumerate(graph.default_outputs)}
+        if graph is not None:
+            order = self.requested if self.requested is not None else graph.default_outputs
+            rank = {name: i for i, name in enumerate(order)}
             outputs_union.sort(key=lambda name: rank.get(name, len(rank)))
         return Result(
             kind=graph.kind if graph else "",

@@ -68,8 +68,12 @@ def test_missing_roughness_and_temperature_are_reported_up_front(steel):
 
 
 def test_unknown_output_and_effect(contact):
-    with pytest.raises(InputError, match="cannot give 'torque'"):
+    with pytest.raises(InputError, match="cannot give 'torque' with these models; it gives: .*b, .*p_h"):
         cc.Analysis(contact, outputs=["torque"])
+    with pytest.raises(InputError, match="no variant of this analysis can give 'torque'"):
+        cc.Analysis(contact, outputs=["torque"], models={"film": ["moes", "grubin"]})
+    with pytest.raises(InputError, match="cannot give 'h_min' with these models"):
+        cc.Analysis(contact, outputs=["h_min"], models={"film": "moes"})
     with pytest.raises(InputError, match="unknown effects"):
         cc.Analysis(contact, effects=["magic"])
     with pytest.raises(InputError, match=r"effects \['dynamics'\] do not apply to a line_contact scene"):
@@ -87,6 +91,13 @@ def test_variants_share_steps_and_differ_downstream(contact):
     assert list(frame["variant"]) == ["dowson_higginson", "moes"]
     assert np.isnan(frame.loc[0, "h_c [µm]"]) and np.isnan(frame.loc[1, "h_min [µm]"])
     assert frame.loc[0, "b [µm]"] == frame.loc[1, "b [µm]"]
+
+
+def test_explicit_outputs_with_variants_that_lack_one(contact):
+    result = cc.Analysis(contact, outputs=["h_min", "h_c"], models={"film": ["grubin", "dowson_higginson"]}).run()
+    frame = result.to_frame()
+    assert list(frame.columns) == ["variant", "h_min [µm]", "h_c [µm]"]
+    assert np.isnan(frame.loc[0, "h_min [µm]"]) and np.isnan(frame.loc[1, "h_c [µm]"])
 
 
 def test_frame_units_and_columns(contact):
