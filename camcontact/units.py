@@ -198,7 +198,8 @@ def format_quantity(quantity: Any) -> str:
     """Short human form of a Quantity (``'210 GPa'``); other values as ``repr``."""
     if isinstance(quantity, pint.Quantity):
         if np.ndim(quantity.magnitude) == 0:
-            return f"{quantity:~P}"
+            unit = f"{quantity.units:~P}"
+            return f"{quantity.magnitude:.6g} {unit}" if unit else f"{quantity.magnitude:.6g}"
         magnitude = np.asarray(quantity.magnitude)
         unit = f"{quantity.units:~P}"
         return f"array(shape={magnitude.shape}, {magnitude.min():g}..{magnitude.max():g}) {unit}"

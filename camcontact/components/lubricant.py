@@ -108,7 +108,7 @@ class LubricantState:
     density_law: DensityLaw
 
     def _alpha(self) -> float:
-        if self.alpha is None:  # pragma: no branch
+        if self.alpha is None:
             raise InputError(
                 f"Lubricant {self.name!r} has no pressure–viscosity data: give alpha "
                 "(or roelands_z), or switch the 'piezoviscosity' effect off"
