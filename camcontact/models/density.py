@@ -35,7 +35,6 @@ class DowsonHigginsonDensity(DensityLaw):
 
     name = "dowson_higginson"
     reference = "Dowson & Higginson (1966) Elastohydrodynamic Lubrication; Tsuha (2015) Eq. 4.7"
-    validity = {"pressure": (0.0, 4e9)}
 
     a: float = 5.9e8
     b: float = 1.34

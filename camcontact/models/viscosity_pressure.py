@@ -34,7 +34,8 @@ class Barus(ViscosityPressureLaw):
     .. math:: \\eta(p) = \\eta_0 \\exp(\\alpha p)
 
     Parameters of :meth:`log_viscosity_ratio`: p [Pa], eta0 [Pa*s], alpha [1/Pa].
-    Overestimates eta above roughly 0.5 GPa (Hamrock, Schmid & Jacobson 2004, §4.2).
+    Valid only for moderate pressures: it overestimates the viscosity at EHL pressures
+    (Tsuha 2015 §4.2, citing Hamrock, Schmid & Jacobson 2004).
 
     References
     ----------
@@ -43,7 +44,6 @@ class Barus(ViscosityPressureLaw):
 
     name = "barus"
     reference = "Barus (1893) Am. J. Sci. 45:87; Tsuha (2015) Eq. 4.4"
-    validity = {"pressure": (0.0, 5e8)}
 
     def log_viscosity_ratio(self, pressure, eta0, alpha):
         return alpha * np.asarray(pressure, dtype=float)
@@ -87,7 +87,8 @@ class Roelands(ViscosityPressureLaw):
 
     name = "roelands"
     reference = "Roelands (1966) thesis TH Delft; Tsuha (2015) Eqs. 4.5-4.6 (alpha-z consistency, Venner 1991)"
-    validity = {"roelands_z": (0.4, 0.8), "pressure": (0.0, 3e9)}
+    #: typical range of z for lubricating oils (Tsuha 2015 §4.2)
+    validity = {"roelands_z": (0.5, 0.7)}
 
     p0: float = ROELANDS_P0
     ln_eta_inf: float = ROELANDS_LN_ETA_INF

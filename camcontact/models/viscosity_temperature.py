@@ -76,7 +76,8 @@ class Walther(ViscosityTemperatureLaw):
 
     name = "walther"
     reference = "Walther (1931); ASTM D341; Delabenetta (2021) Eqs. 32-34, 37"
-    validity = {"kinematic_viscosity_cSt": (2.0, 2e7)}
+    #: the plain form (a = 0.7) holds down to 2 cSt; below, ASTM D341 adds a correction term
+    validity = {"kinematic_viscosity_cSt": (2.0, None)}
     points_needed = 2
 
     a: float = 0.7
