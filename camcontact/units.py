@@ -279,6 +279,25 @@ def above_absolute_zero():
 
 
 # ---------------------------------------------------------------- attrs field helpers
+def _converting_field(convert, *, default, optional, validators, metadata, **options):
+    """attrs field whose converter is ``convert(value, "Class.field")`` (None passes if optional)."""
+
+    def _convert(value, instance, field):
+        if value is None and optional:
+            return None
+        return convert(value, f"{type(instance).__name__}.{field.name}")
+
+    if optional and default is attrs.NOTHING:
+        default = None
+    return attrs.field(
+        default=default,
+        converter=attrs.Converter(_convert, takes_self=True, takes_field=True),
+        validator=list(validators),
+        metadata=metadata,
+        **options,
+    )
+
+
 def quantity_field(
     dimension: str,
     *,
@@ -294,24 +313,15 @@ def quantity_field(
     range ``validators`` (on the SI magnitude). ``optional=True`` admits ``None``.
     """
 
-    def _convert(value, instance, field):
-        if value is None and optional:
-            return None
-        where = f"{type(instance).__name__}.{field.name}"
+    def convert(value, where):
         if value is None:
             raise InputError(f"{where} is required (a quantity of dimension {dimension})")
         return to_quantity(value, dimension, where=where)
 
-    if optional and default is attrs.NOTHING:
-        default = None
-    return attrs.field(
-        default=default,
-        converter=attrs.Converter(_convert, takes_self=True, takes_field=True),
-        validator=list(validators),
-        repr=format_quantity,
-        eq=attrs.cmp_using(eq=_quantity_eq),
-        hash=False,
+    return _converting_field(
+        convert, default=default, optional=optional, validators=validators,
         metadata={"dimension": dimension, "doc": doc},
+        repr=format_quantity, eq=attrs.cmp_using(eq=_quantity_eq), hash=False,
     )
 
 
@@ -323,19 +333,9 @@ def number_field(
     doc: str = "",
 ):
     """An attrs field for a dimensionless float (rejects NaN, inf and non-numbers)."""
-
-    def _convert(value, instance, field):
-        if value is None and optional:
-            return None
-        return to_float(value, where=f"{type(instance).__name__}.{field.name}")
-
-    if optional and default is attrs.NOTHING:
-        default = None
-    return attrs.field(
-        default=default,
-        converter=attrs.Converter(_convert, takes_self=True, takes_field=True),
-        validator=list(validators),
-        metadata={"dimension": "[]", "doc": doc},
+    return _converting_field(
+        lambda value, where: to_float(value, where=where), default=default, optional=optional,
+        validators=validators, metadata={"dimension": "[]", "doc": doc},
     )
 
 

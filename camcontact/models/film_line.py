@@ -33,6 +33,10 @@ __all__ = ["DowsonHigginson", "DowsonToyoda", "Grubin", "LinePowerLaw", "Moes", 
 
 LINE_INPUTS = ("R", "w", "E_reduced", "u_m", "eta0", "alpha")
 
+#: Dowson's practical parameter ranges of line-contact EHL (W' 3e-5..3e-4, U 1e-13..1e-8),
+#: as quoted by Saccheto (2008) §4.2; the validity of the power-law formulas below.
+DOWSON_RANGE = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+
 
 def _line_groups(R, w, E_reduced, u_m, eta0, alpha, model: str) -> tuple:
     u = np.asarray(u_m, dtype=float)
@@ -98,7 +102,7 @@ class Grubin(LinePowerLaw):
     name = "grubin"
     reference = "Grubin (1949) TsNIITMASh 30; Saccheto (2008) Eq. 4.41; Delabenetta (2021) Eq. 40"
     provides = ("h_c",)
-    validity = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+    validity = DOWSON_RANGE
 
     exponent_digits: int | None = None
 
@@ -127,7 +131,7 @@ class DowsonHigginson(LinePowerLaw):
     reference = "Dowson & Higginson (1977) Elasto-hydrodynamic Lubrication; Delabenetta (2021) Eq. 41"
     provides = ("h_min",)
     terms = {"h_min": (2.65, 0.70, 0.54, -0.13)}
-    validity = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+    validity = DOWSON_RANGE
 
 
 @builtin
@@ -146,7 +150,7 @@ class DowsonToyoda(LinePowerLaw):
     reference = "Dowson & Toyoda (1979) Proc. 5th Leeds-Lyon Symp. 60-65"
     provides = ("h_c",)
     terms = {"h_c": (3.06, 0.69, 0.56, -0.10)}
-    validity = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+    validity = DOWSON_RANGE
 
 
 @builtin
@@ -170,9 +174,8 @@ class PanHamrock(LinePowerLaw):
         "h_min": (1.714, 0.694, 0.568, -0.128),
         "h_c": (2.922, 0.692, 0.470, -0.166),
     }
-    #: Dowson's practical range of line-contact formulas (Saccheto 2008 §4.2); the fitted
-    #: range of Pan & Hamrock's own solutions is not in the project's references.
-    validity = {"W": (3e-5, 3e-4), "U": (1e-13, 1e-8)}
+    #: the fitted range of Pan & Hamrock's own solutions is not in the project's references
+    validity = DOWSON_RANGE
 
 
 def moes_line_film(M, L, *, elasticity: bool = True):
