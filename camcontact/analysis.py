@@ -61,6 +61,8 @@ class Step:
     model: str = ""
     version: str = ""
     check: Callable[[], None] | None = attrs.field(default=None, repr=False)
+    #: distinguishes two model objects of the same name (e.g. differently parameterised)
+    identity: Any = attrs.field(default=None, repr=False)
 
 
 @attrs.frozen
@@ -173,6 +175,9 @@ class Analysis:
             chosen = dict(self.models)
             chosen.update(zip(slots, combination))
             label = ", ".join(_model_label(m) for m in combination)
+            taken = {existing for existing, _ in variants}
+            if label in taken:  # two model objects of one name: number the repeats
+                label = next(f"{label} #{n}" for n in itertools.count(2) if f"{label} #{n}" not in taken)
             variants.append((label, chosen))
         return variants
 
@@ -238,7 +243,7 @@ class Analysis:
         for step in order:
             upstream = sorted({signatures[providers[k].name] for k in step.requires if k in providers
                                and k not in graph.inputs}, key=repr)
-            signatures[step.name] = (step.name, step.model, step.version, tuple(upstream))
+            signatures[step.name] = (step.name, step.model, step.version, step.identity, tuple(upstream))
         return graph, outputs, [(step, signatures[step.name]) for step in order]
 
     # --------------------------------------------------------------- running
@@ -267,8 +272,8 @@ class Analysis:
             rows.append(row)
             outputs_union += [o for o in outputs if o not in outputs_union]
         if graph is not None:
-            order = self.requested if self.requested is not None else graph.default_outputs
-            rank = {name: i for i, name in enumerate(order)}
+            preferred = self.requested if self.requested is not None else graph.default_outputs
+            rank = {name: i for i, name in enumerate(preferred)}
             outputs_union.sort(key=lambda name: rank.get(name, len(rank)))
         return Result(
             kind=graph.kind if graph else "",

@@ -257,7 +257,7 @@ def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo:
              ("alpha_effective", "U", "G", "W", "M", "L"), run_groups, check=check_piezo),
         Step("film", (*LINE_INPUTS[:4], "eta0", "alpha_effective", "U", "G", "W", "M", "L"),
              (*(f"{q}_isothermal" for q in films), "film_validity"), run_film,
-             model=model_name, version=getattr(model, "version", "")),
+             model=model_name, version=getattr(model, "version", ""), identity=id(model)),
         Step("film_thickness", (*(f"{q}_isothermal" for q in films), *(("thermal_factor",) if thermal else ())),
              films, run_final, model="thermal" if thermal else "isothermal"),
         Step("lambda", (*films, "sigma1", "sigma2"), (*(f"Lambda_{q[2:]}" for q in films), "regime"), run_lambda),

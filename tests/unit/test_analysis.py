@@ -100,6 +100,19 @@ def test_explicit_outputs_with_variants_that_lack_one(contact):
     assert np.isnan(frame.loc[0, "h_min [µm]"]) and np.isnan(frame.loc[1, "h_c [µm]"])
 
 
+def test_two_models_of_the_same_name_are_not_confused(contact):
+    class Fixed(SpyFilm):
+        def __init__(self, value):
+            self.value = value
+
+        def evaluate(self, R, w, E_reduced, u_m, eta0, alpha):
+            return {"h_c": self.value}
+
+    result = cc.Analysis(contact, outputs=["h_c"], models={"film": [Fixed(1e-6), Fixed(2e-6)]}).run()
+    assert result["h_c"] == [1e-6, 2e-6]
+    assert result.variants == ("spy", "spy #2")
+
+
 def test_frame_units_and_columns(contact):
     result = cc.Analysis(contact, outputs=["h_c", "p_h", "regime"], models={"film": "moes"}).run()
     frame = result.to_frame(units={"h_c": "nm", "p_h": "GPa"})
