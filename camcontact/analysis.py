@@ -75,6 +75,7 @@ class SceneGraph:
     default_outputs: tuple[str, ...]
     input_hints: Mapping[str, str] = attrs.field(factory=dict)
     plotter: Callable[..., Any] | None = attrs.field(default=None, repr=False)
+    effects: frozenset = frozenset()  #: the effects in force (the scene's defaults if none were asked)
 
 
 @attrs.frozen
@@ -281,7 +282,7 @@ class Analysis:
             variants=tuple(label for label, _ in self.variants),
             rows=tuple(rows),
             records=tuple(records),
-            effects=self.effects,
+            effects=graph.effects if graph else frozenset(),
             plotter=graph.plotter if graph else None,
             scene=self.scene,
         )
@@ -301,7 +302,7 @@ class Result:
     variants: tuple[str, ...]
     rows: tuple[dict[str, Any], ...] = attrs.field(repr=False)
     records: tuple[StepRecord, ...] = attrs.field(repr=False)
-    effects: frozenset | None
+    effects: frozenset  #: effects in force
     plotter: Callable[..., Any] | None = attrs.field(default=None, repr=False, eq=False)
     scene: Any = attrs.field(default=None, repr=False, eq=False)
 

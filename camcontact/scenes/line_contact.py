@@ -18,6 +18,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+import attrs
 import numpy as np
 
 from .. import registry
@@ -73,9 +74,12 @@ def _film_model(spec: Any, effects: frozenset) -> FilmModel:
             f"film model {candidate.name!r} cannot represent a scene without {', '.join(cannot)}; "
             f"line models that can: {', '.join(able) or '(none)'}"
         )
+    flags = {effect: False for effect in switched_off}
     if isinstance(spec, str):
-        return registry.get("film_models", spec, **{effect: False for effect in switched_off})
-    return candidate
+        return registry.get("film_models", spec, **flags)
+    if attrs.has(type(candidate)):
+        return registry.get("film_models", candidate, **flags)
+    return candidate  # a model without such switches: it receives alpha_effective = 0 when piezoviscosity is off
 
 
 @scene_builder(LineContact)
@@ -128,7 +132,7 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
     steps += _film_steps(contact, models.get("film", DEFAULT_FILM), effects, piezo)
     return SceneGraph(
         kind="line_contact", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS,
-        input_hints=HINTS, plotter=plot_line_contact,
+        input_hints=HINTS, plotter=plot_line_contact, effects=effects,
     )
 
 

@@ -138,7 +138,12 @@ def test_effect_piezoviscosity_off_needs_a_capable_model(contact):
     with pytest.raises(InputError, match="cannot represent a scene without piezoviscosity; line models that can: .*moes"):
         cc.Analysis(contact, outputs=["h_c"], effects=["elasticity"], models={"film": "grubin"})
     iso = cc.Analysis(contact, outputs=["h_c", "L", "M"], effects=["elasticity"], models={"film": "moes"}).run()
-    assert iso["L"] == 0.0
+    assert iso["L"] == 0.0 and iso.effects == {"elasticity"}
+    from camcontact.models.film_line import Moes
+
+    instance = cc.Analysis(contact, outputs=["h_c"], effects=["elasticity"], models={"film": Moes()}).run()
+    assert instance["h_c"] == pytest.approx(iso["h_c"], rel=1e-14)
+    assert cc.Analysis(contact, outputs=["b"]).run().effects == {"elasticity", "piezoviscosity"}
     # independent: Moes isoviscous-elastic limit, L = 0, evaluated from the formula parts
     M = iso["M"]
     h_ri, h_ei = 3.0 / M, 2.621 * M ** -0.2
