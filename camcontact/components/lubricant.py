@@ -158,7 +158,8 @@ class Lubricant(Component):
     viscosity_pressure_law : str
         ``"roelands"`` (default) or ``"barus"``, or any plugin of kind ``"pressure"``.
     viscosity_temperature_law : str
-        ``"walther"`` (default, ASTM D341), ``"vogel"``, or any plugin of kind ``"temperature"``.
+        ``"walther"`` (default), ``"astm_d341"`` (Walther with the low-viscosity term),
+        ``"vogel"``, or any plugin of kind ``"temperature"``.
     density_law : str
         ``"dowson_higginson"`` (default) or ``"incompressible"``.
     thermal_conductivity : Quantity or str, optional
@@ -249,10 +250,10 @@ class Lubricant(Component):
         if self.alpha_correlation is not None:
             if self.alpha is not None or self.roelands_z is not None:
                 raise InputError(f"{where}: alpha_correlation replaces alpha and roelands_z; give only one")
-            if self.viscosity_temperature_law != "walther" or not kinematic_data:
+            if self.viscosity_temperature_law not in ("walther", "astm_d341") or not kinematic_data:
                 raise InputError(
                     f"{where}: alpha_correlation='gold' needs kinematic viscosity data (nu40/nu100 or "
-                    "viscosity_data) fitted with viscosity_temperature_law='walther'"
+                    "viscosity_data) fitted with viscosity_temperature_law='walther' or 'astm_d341'"
                 )
         if self.eta0 is None and self.reference_temperature is not None:
             raise InputError(f"{where}: reference_temperature applies to eta0, which is not given")

@@ -1,6 +1,7 @@
 """Viscosity–temperature laws (family ``viscosity_laws``, kind ``"temperature"``).
 
-* ``walther`` — Walther / ASTM D341 double-log law on kinematic viscosity (2+ points).
+* ``walther`` — Walther double-log law on kinematic viscosity, nu + a (2+ points);
+* ``astm_d341`` — the same with ASTM D341's low-viscosity term (below about 2 cSt);
 * ``vogel`` — Vogel (Vogel–Fulcher–Tammann) exponential law (3+ points).
 
 A law is fitted to (temperature [K], viscosity) points with :meth:`fit`, which returns a
@@ -20,7 +21,7 @@ from ..errors import InputError
 from ..registry import builtin
 from .base import ViscosityTemperatureLaw
 
-__all__ = ["Vogel", "Walther"]
+__all__ = ["AstmD341", "Vogel", "Walther"]
 
 _CST = 1e-6  # 1 cSt = 1 mm^2/s = 1e-6 m^2/s
 
@@ -88,7 +89,7 @@ class Walther(ViscosityTemperatureLaw):
         """Fit to temperatures [K] and kinematic viscosities [m^2/s]."""
         t, nu = _points(self.name, temperatures, viscosities, self.points_needed)
         x = np.log10(t)
-        y = np.log10(np.log10(nu / _CST + self.a))
+        y = np.log10(np.log10(self._z(nu / _CST)))
         if t.size == 2:
             m = (y[0] - y[1]) / (x[1] - x[0])
             n = y[0] + m * x[0]
@@ -106,16 +107,74 @@ class Walther(ViscosityTemperatureLaw):
         """Kinematic viscosity [m^2/s] at ``temperature`` [K]."""
         _require_fitted(self, self.m, self.n)
         t = np.asarray(temperature, dtype=float)
-        nu_cst = 10.0 ** (10.0 ** (self.n - self.m * np.log10(t))) - self.a
+        nu_cst = self._nu_from_z(10.0 ** (10.0 ** (self.n - self.m * np.log10(t))))
         return float(nu_cst * _CST) if nu_cst.ndim == 0 else nu_cst * _CST
 
     def thermoviscous_coefficient(self, temperature):
-        """beta = -d(ln nu)/dT [1/K] at ``temperature`` [K] (Delabenetta 2021, Eq. 37)."""
+        """beta = -d(ln nu)/dT [1/K] at ``temperature`` [K] (Delabenetta 2021, Eq. 37).
+
+        From dZ/dT = -m Z ln Z / T and dnu/dT = (dZ/dT)/(dZ/dnu).
+        """
         t = np.asarray(temperature, dtype=float)
         nu_cst = np.asarray(self.viscosity(t)) / _CST
-        z = nu_cst + self.a
-        beta = self.m * z * np.log(z) / (nu_cst * t)
+        z = self._z(nu_cst)
+        beta = self.m * z * np.log(z) / (nu_cst * t * self._dz_dnu(nu_cst))
         return float(beta) if beta.ndim == 0 else beta
+
+    # Z(nu) of the double-log law (nu in cSt), its inverse and derivative
+    def _z(self, nu_cst):
+        return nu_cst + self.a
+
+    def _nu_from_z(self, z):
+        return np.asarray(z - self.a, dtype=float)
+
+    def _dz_dnu(self, nu_cst):
+        return np.ones_like(nu_cst)
+
+
+@builtin
+@attrs.frozen
+class AstmD341(Walther):
+    """ASTM D341 viscosity–temperature relation with its low-viscosity term.
+
+    .. math::
+        \\log_{10}\\log_{10} Z = n - m \\log_{10} T, \\qquad
+        Z = \\nu + 0.7 + \\exp(-1.47 - 1.84\\,\\nu - 0.51\\,\\nu^2)
+
+    (nu in cSt, natural exponential). Above about 3 cSt the extra term is below 1e-5 cSt and
+    the law equals ``walther``; it matters when data or predictions fall below 2 cSt. Z(nu)
+    is inverted exactly by Newton iteration (the standard's polynomial inverse is
+    approximate, to about 2e-4 cSt).
+
+    References
+    ----------
+    ASTM D341 (2009 and later editions), Eqs. 1–3, as reproduced by the ASTM D341 pages of
+    technicaltoolboxes.com and ttwiki.
+    """
+
+    name = "astm_d341"
+    reference = "ASTM D341 Eqs. 1-3 (low-viscosity Z term)"
+    validity = {}
+
+    def _z(self, nu_cst):
+        nu_cst = np.asarray(nu_cst, dtype=float)
+        return nu_cst + 0.7 + np.exp(-1.47 - 1.84 * nu_cst - 0.51 * nu_cst**2)
+
+    def _dz_dnu(self, nu_cst):
+        nu_cst = np.asarray(nu_cst, dtype=float)
+        return 1.0 - (1.84 + 1.02 * nu_cst) * np.exp(-1.47 - 1.84 * nu_cst - 0.51 * nu_cst**2)
+
+    def _nu_from_z(self, z):
+        z = np.asarray(z, dtype=float)
+        if np.any(z <= 0.7 + np.exp(-1.47)):
+            raise InputError(f"astm_d341: Z = {np.min(z):.6g} is below its value at nu = 0; the law is not defined there")
+        nu = np.maximum(z - 0.7, 0.0)
+        for _ in range(60):  # Z(nu) is increasing and convex enough: Newton converges in a few steps
+            step = (self._z(nu) - z) / self._dz_dnu(nu)
+            nu = np.maximum(nu - step, 0.0)
+            if np.all(np.abs(step) <= 1e-14 * np.maximum(nu, 1.0)):
+                return nu
+        raise InputError(f"astm_d341: inverting Z = {z!r} did not converge")
 
 
 @builtin

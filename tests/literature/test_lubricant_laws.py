@@ -10,7 +10,7 @@ from camcontact.errors import InputError
 from camcontact.models.density import DowsonHigginsonDensity
 from camcontact.models.pressure_viscosity_coefficient import gold_alpha
 from camcontact.models.viscosity_pressure import Barus, Roelands, roelands_consistent
-from camcontact.models.viscosity_temperature import Vogel, Walther
+from camcontact.models.viscosity_temperature import AstmD341, Vogel, Walther
 
 CST = 1e-6
 
@@ -34,6 +34,28 @@ def test_astm_d341_scribd_calculator():
     law = Walther().fit([313.0, 373.0], [32 * CST, 5.4 * CST])
     assert law.n == pytest.approx(9.5259, abs=5e-5) and law.m == pytest.approx(3.7449, abs=5e-5)
     assert law.viscosity(353.0) / CST == pytest.approx(8.5, abs=0.05)
+
+
+def test_astm_d341_low_viscosity_term():
+    """ASTM D341 with Z = nu + 0.7 + exp(-1.47 - 1.84 nu - 0.51 nu^2): 1.5 cSt at 20 °C and 0.6 cSt at
+    100 °C give 0.88816 cSt at 60 °C (independent evaluation with the standard's approximate inverse,
+    which is good to ~2e-4 cSt) against 0.85272 cSt for the plain nu + 0.7 form."""
+    low = AstmD341().fit([293.15, 373.15], [1.5 * CST, 0.6 * CST])
+    assert low.viscosity(333.15) / CST == pytest.approx(0.88816, abs=2e-4)
+    plain = Walther().fit([293.15, 373.15], [1.5 * CST, 0.6 * CST])
+    assert plain.viscosity(333.15) / CST == pytest.approx(0.85272, abs=1e-5)
+    # the exact Newton inverse round-trips, and beta is the derivative
+    nu = np.array([0.3, 0.5, 1.0, 2.0, 5.0])
+    np.testing.assert_allclose(low._nu_from_z(low._z(nu)), nu, rtol=1e-12)
+    T, dT = 333.15, 1e-4
+    numeric = -(math.log(low.viscosity(T + dT)) - math.log(low.viscosity(T - dT))) / (2 * dT)
+    assert low.thermoviscous_coefficient(T) == pytest.approx(numeric, rel=1e-6)
+
+
+def test_astm_d341_equals_walther_for_ordinary_oils():
+    """The extra term is < 1e-5 cSt above 3 cSt: olezol example 1 (132.126 cSt) is unchanged."""
+    law = AstmD341().fit([313.15, 373.15], [404 * CST, 28 * CST])
+    assert law.viscosity(333.15) / CST == pytest.approx(132.126, abs=0.001)
 
 
 def test_walther_thermoviscous_coefficient_is_the_derivative():

@@ -190,3 +190,38 @@ def test_plot_returns_a_figure(contact):
     result = cc.Analysis(contact, models={"film": ["moes", "pan_hamrock"]}).run()
     figure = result.plot()
     assert len(figure.axes) == 3
+
+
+SPY_PLUGIN = '''
+from camcontact.models.base import FilmModel
+
+class CountingFilm(FilmModel):
+    """A film plugin that counts its calls."""
+    name = "counting_spy"
+    reference = "test double"
+    geometry = "line"
+    requires = ("R", "w", "E_reduced", "u_m", "eta0", "alpha")
+    provides = ("h_c", "h_min")
+    calls = 0
+    def evaluate(self, R, w, E_reduced, u_m, eta0, alpha):
+        type(self).calls += 1
+        return {"h_c": 2e-7, "h_min": 1e-7}
+'''
+
+
+def test_spy_plugin_found_by_name_is_not_called_for_hertz_outputs(contact, tmp_path, monkeypatch, clean_registry):
+    import importlib
+    import importlib.metadata as metadata
+
+    from camcontact import registry
+
+    (tmp_path / "spy_plugin_module.py").write_text(SPY_PLUGIN)
+    monkeypatch.syspath_prepend(str(tmp_path))
+    point = metadata.EntryPoint("counting_spy", "spy_plugin_module:CountingFilm", "camcontact.film_models")
+    monkeypatch.setattr(registry, "_entry_points", lambda group: [point] if group == point.group else [])
+    for outputs in (["b", "p_h"], ["tau_max", "z_tau_max", "approach"]):
+        cc.Analysis(contact, outputs=outputs, models={"film": "counting_spy"}).run()
+    spy = importlib.import_module("spy_plugin_module").CountingFilm
+    assert spy.calls == 0
+    result = cc.Analysis(contact, outputs=["h_min", "Lambda_min"], models={"film": "counting_spy"}).run()
+    assert spy.calls == 1 and result["h_min"] == 1e-7 and result["Lambda_min"] == pytest.approx(1e-7 / (0.2e-6 * 2**0.5))

@@ -31,7 +31,7 @@ def test_lubricant_needs_both_nu40_and_nu100():
 def test_lubricant_law_kind_is_checked():
     with pytest.raises(InputError, match="is a temperature law; pressure laws: barus, roelands"):
         cc.Lubricant(eta0="0.04 Pa*s", viscosity_pressure_law="walther")
-    with pytest.raises(UnknownModelError, match="available: barus, roelands, vogel, walther"):
+    with pytest.raises(UnknownModelError, match="available: astm_d341, barus, roelands, vogel, walther"):
         cc.Lubricant(eta0="0.04 Pa*s", viscosity_temperature_law="arrhenius")
 
 
