@@ -1,0 +1,388 @@
+"""Numba kernels of the line-contact EHL solver, each with its plain-Python twin.
+
+Every kernel is written once, as plain Python on float64 arrays (the *twin*, used by the
+tests on small grids and readable as the specification); :func:`compiled` returns the
+``numba.njit(cache=True)`` version of the same function, compiled on first use. Helpers
+are ``register_jitable`` so that they run both inside compiled code and as Python.
+
+Importing this module imports numba but compiles nothing.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba.extending import register_jitable
+
+__all__ = ["PY", "compiled"]
+
+#: 6th-order interpolation weights from coarse points J0-2..J0+3 to the midpoint of J0, J0+1
+INTERP6 = np.array([3.0, -25.0, 150.0, 150.0, -25.0, 3.0]) / 256.0
+
+
+# ----------------------------------------------------------------------------- deformation kernel
+@register_jitable
+def _antiderivative(t):
+    """F(t) = t (ln|t| - 1), an odd antiderivative of ln|t| (F(0) = 0)."""
+    if t == 0.0:
+        return 0.0
+    return t * (math.log(abs(t)) - 1.0)
+
+
+@register_jitable
+def kernel_value(d, h):
+    """K(d) = int_{(d - 1/2) h}^{(d + 1/2) h} ln|t| dt for real d (Tsuha 2015 Eq. 5.46)."""
+    return _antiderivative((d + 0.5) * h) - _antiderivative((d - 0.5) * h)
+
+
+def deformation_direct(P, h):
+    """w_i = sum_j K(i - j) P_j on a uniform grid (O(n^2)); H = H0 + X^2/2 - w/pi."""
+    n = P.shape[0]
+    table = np.empty(n)
+    for d in range(n):
+        table[d] = kernel_value(float(d), h)
+    w = np.zeros(n)
+    for j in range(n):
+        pj = P[j]
+        if pj == 0.0:
+            continue
+        for i in range(n):
+            w[i] += table[abs(i - j)] * pj
+    return w
+
+
+# ----------------------------------------------------------------------------- MLMI pieces
+def mlmi_anterpolate(u, first, weights):
+    """Coarse 'charges' U = Pi^T u of fine values u on fine indices first..first+len(u)-1.
+
+    Returns (U, J_first): U on coarse indices J_first.. (fine index 2J). Even fine points
+    inject; odd ones (midpoints of J0, J0+1) spread with the 6-point weights to J0-2..J0+3.
+    """
+    last = first + u.shape[0] - 1
+    j_first = (first - 1) // 2 - 2
+    j_last = last // 2 + 3
+    U = np.zeros(j_last - j_first + 1)
+    for k in range(u.shape[0]):
+        value = u[k]
+        if value == 0.0:
+            continue
+        j = first + k
+        if j % 2 == 0:
+            U[j // 2 - j_first] += value
+        else:
+            j0 = (j - 1) // 2
+            for s in range(6):
+                U[j0 - 2 + s - j_first] += weights[s] * value
+    return U, j_first
+
+
+def mlmi_direct(U, u_first, out_first, out_count, h, stride):
+    """W(I) = sum_J K(stride (I - J)) U(J) for I = out_first..out_first+out_count-1 (fine kernel of width h)."""
+    W = np.zeros(out_count)
+    for k in range(U.shape[0]):
+        value = U[k]
+        if value == 0.0:
+            continue
+        J = u_first + k
+        for o in range(out_count):
+            W[o] += kernel_value(float(stride * (out_first + o - J)), h) * value
+    return W
+
+
+def mlmi_correction_tables(h, stride, m, weights):
+    """c1(d), c2(e) for d, e in [-m, m]: exact kernel minus its interpolated approximation.
+
+    c1(d) = K(d) - sum_s w_s K(d + 1 - 2(s - 2)) (source-side, odd source points);
+    c2(e) = K(e) - sum_s w_s K(e - 1 + 2(s - 2)) (target-side, odd target points);
+    K(d) = kernel_value(stride * d, h).
+    """
+    c1 = np.zeros(2 * m + 1)
+    c2 = np.zeros(2 * m + 1)
+    for k in range(2 * m + 1):
+        d = k - m
+        exact = kernel_value(float(stride * d), h)
+        approx1 = 0.0
+        approx2 = 0.0
+        for s in range(6):
+            shift = 2 * (s - 2)
+            approx1 += weights[s] * kernel_value(float(stride * (d + 1 - shift)), h)
+            approx2 += weights[s] * kernel_value(float(stride * (d - 1 + shift)), h)
+        c1[k] = exact - approx1
+        c2[k] = exact - approx2
+    return c1, c2
+
+
+def mlmi_interpolate_correct(W, w_first, U, u_coarse_first, u, u_first, out_first, out_count, c1, c2, m, weights):
+    """Fine result on out_first.. from coarse W (on w_first..), with both local corrections.
+
+    even i: V(i) = W(i/2); odd i: V(i) = sum_s w_s W(i0 - 2 + s) + sum_J c2(i - 2J) U(J);
+    then w(i) = V(i) + sum_{odd j, |i - j| <= m} c1(i - j) u(j).
+    """
+    out = np.zeros(out_count)
+    u_last = u_first + u.shape[0] - 1
+    U_last = u_coarse_first + U.shape[0] - 1
+    for o in range(out_count):
+        i = out_first + o
+        if i % 2 == 0:
+            value = W[i // 2 - w_first]
+        else:
+            base = (i - 1) // 2 - 2 - w_first
+            value = (weights[0] * W[base] + weights[1] * W[base + 1] + weights[2] * W[base + 2]
+                     + weights[3] * W[base + 3] + weights[4] * W[base + 4] + weights[5] * W[base + 5])
+            # target-side correction over coarse sources J with |i - 2J| <= m
+            j_low = max((i - m + 1) // 2, u_coarse_first)
+            j_high = min((i + m) // 2, U_last)
+            for J in range(j_low, j_high + 1):
+                value += c2[i - 2 * J + m] * U[J - u_coarse_first]
+        # source-side correction over the odd fine sources j with |i - j| <= m
+        low = max(i - m, u_first)
+        if low % 2 == 0:
+            low += 1
+        high = min(i + m, u_last)
+        for j in range(low, high + 1, 2):
+            value += c1[i - j + m] * u[j - u_first]
+        out[o] = value
+    return out
+
+
+# ----------------------------------------------------------------------------- lubricant laws
+# law codes: viscosity 0 = Barus, 1 = Roelands; density 0 = incompressible, 1 = Dowson-Higginson
+# params = [alpha_bar, p_h/p0, alpha p0/z, z, p_h/5.9e8, 1.34]
+
+
+@register_jitable
+def log_viscosity(P, viscosity_code, params):
+    """ln(eta-bar) at dimensionless pressure P (negative P counts as 0)."""
+    if P <= 0.0:
+        return 0.0
+    if viscosity_code == 0:
+        return params[0] * P
+    return params[2] * math.expm1(params[3] * math.log1p(P * params[1]))
+
+
+@register_jitable
+def density_ratio(P, density_code, params):
+    if density_code == 0 or P <= 0.0:
+        return 1.0
+    q = P * params[4]
+    return (1.0 + params[5] * q) / (1.0 + q)
+
+
+@register_jitable
+def dlog_xi_dp(P, viscosity_code, density_code, params):
+    """d ln(xi)/dP at fixed H: d ln(rho)/dP - d ln(eta)/dP (zero for P <= 0)."""
+    if P <= 0.0:
+        return 0.0
+    if viscosity_code == 0:
+        dlog_eta = params[0]
+    else:
+        dlog_eta = params[2] * params[3] * params[1] * (1.0 + P * params[1]) ** (params[3] - 1.0)
+    dlog_rho = 0.0
+    if density_code == 1:
+        q = P * params[4]
+        dlog_rho = params[4] * (params[5] - 1.0) / ((1.0 + q) * (1.0 + params[5] * q))
+    return dlog_rho - dlog_eta
+
+
+@register_jitable
+def drho_dp(P, density_code, params):
+    if density_code == 0 or P <= 0.0:
+        return 0.0
+    q = P * params[4]
+    return params[4] * (params[5] - 1.0) / ((1.0 + q) * (1.0 + q))
+
+
+@register_jitable
+def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K):
+    """(dL_i/dP_i, dL_i/dP_{i-1}) of the discrete operator, local terms only.
+
+    Includes the Poiseuille coefficients, their dependence on P (through rho and eta) and on
+    the films H_{i-1..i+1} (through K), and the wedge's dependence on rho(P) and on the films.
+    ``dlx`` = d ln(xi)/dP at fixed H and ``drh`` = d rho/dP hold the nodal law derivatives.
+    """
+    inv_pi = 1.0 / math.pi
+    hh = h * h
+    left = 0.5 * (xi[i - 1] + xi[i])
+    right = 0.5 * (xi[i] + xi[i + 1])
+    a = (P[i - 1] - P[i]) / hh
+    c = (P[i + 1] - P[i]) / hh
+    d_i = -(left + right) / hh
+    d_im1 = left / hh
+    # coefficients of xi_m in L_i: m = i-1, i, i+1
+    for q in range(3):
+        m = i - 1 + q
+        weight = 0.5 * a if q == 0 else (0.5 * (a + c) if q == 1 else 0.5 * c)
+        if weight == 0.0:
+            continue
+        dxi_dp = xi[m] * dlx[m]
+        dxi_dh = 3.0 * xi[m] / H[m] if H[m] != 0.0 else 0.0
+        if m == i:
+            d_i += weight * dxi_dp
+        elif m == i - 1:
+            d_im1 += weight * dxi_dp
+        d_i -= weight * dxi_dh * inv_pi * K[abs(m - i)]
+        d_im1 -= weight * dxi_dh * inv_pi * K[abs(m - i + 1)]
+    # wedge: -(1/h) sum_k w_k d(rho_m H_m), m = i - k
+    nk = 2 if i == 1 else 3
+    for k in range(nk):
+        if i == 1:
+            weight = 1.0 if k == 0 else -1.0
+        else:
+            weight = 1.5 if k == 0 else (-2.0 if k == 1 else 0.5)
+        m = i - k
+        d_i += inv_pi * weight * rho[m] * K[abs(m - i)] / h
+        d_im1 += inv_pi * weight * rho[m] * K[abs(m - i + 1)] / h
+        if m == i:
+            d_i -= weight * drh[m] * H[m] / h
+        elif m == i - 1:
+            d_im1 -= weight * drh[m] * H[m] / h
+    return d_i, d_im1
+
+
+# ----------------------------------------------------------------------------- EHL operator
+@register_jitable
+def nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi):
+    """Fill rho (density ratio) and xi = rho H^3 / (eta lambda) at every node."""
+    for i in range(P.shape[0]):
+        r = density_ratio(P[i], density_code, params)
+        rho[i] = r
+        hi = H[i]
+        xi[i] = r * hi * hi * hi * math.exp(-log_viscosity(P[i], viscosity_code, params)) / lam
+
+
+def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, out):
+    """out_i = L_i(P, H) at interior nodes (Tsuha 2015 Eqs. 5.38, 5.42); boundary entries 0."""
+    n = P.shape[0]
+    rho = np.empty(n)
+    xi = np.empty(n)
+    nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi)
+    out[0] = 0.0
+    out[n - 1] = 0.0
+    for i in range(1, n - 1):
+        left = 0.5 * (xi[i - 1] + xi[i])
+        right = 0.5 * (xi[i] + xi[i + 1])
+        poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
+        if i == 1:
+            wedge = rho[1] * H[1] - rho[0] * H[0]
+        else:
+            wedge = 1.5 * rho[i] * H[i] - 2.0 * rho[i - 1] * H[i - 1] + 0.5 * rho[i - 2] * H[i - 2]
+        out[i] = poiseuille - wedge / h
+
+
+def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
+                 window, first, last, dry):
+    """One hybrid Gauss–Seidel / Jacobi-distributive sweep for L(P) = f, in place on P and H.
+
+    The regime of each node is fixed from the state at the start of the sweep: Gauss–Seidel
+    where (xi_{i-1/2} + xi_{i+1/2})/h^2 >= switch * |d wedge_i / d P_i| (the equation is
+    differential there), Jacobi-distributive elsewhere (integral character; Venner 1991,
+    Tsuha 2015 Eqs. 5.54–5.59). With r_i = f_i - L_i and the exact local derivatives
+    d_i = dL_i/dP_i, o_i = dL_i/dP_{i-1} (:func:`local_derivatives`):
+
+    * Gauss–Seidel: P_i += omega_gs r_i / d_i at once (clipped at 0); the film of the node
+      and of its ``window`` neighbours is updated through K, xi of i-1..i+1 recomputed;
+    * Jacobi-distributive: delta_i = r_i / (d_i - o_i) applied after the sweep as
+      +omega_jacobi delta_i at i and -omega_jacobi delta_i at i-1; the first node of a
+      distributive region (left neighbour Gauss–Seidel) takes delta_i = r_i / d_i at i only.
+
+    Negative pressures are set to zero (cavitation). K holds K(d) for d = 0..window+3.
+    Only nodes first..last (clipped to the interior) are relaxed; nodes with ``dry`` set are
+    held at P = 0 (a frozen cavitation set). Returns the number of distributive nodes.
+    """
+    n = P.shape[0]
+    rho = np.empty(n)
+    xi = np.empty(n)
+    nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi)
+    delta = np.zeros(n)
+    jacobi = np.zeros(n, dtype=np.bool_)
+    dlx = np.empty(n)
+    drh = np.empty(n)
+    for i in range(n):
+        dlx[i] = dlog_xi_dp(P[i], viscosity_code, density_code, params)
+        drh[i] = drho_dp(P[i], density_code, params)
+    count = 0
+    inv_pi = 1.0 / math.pi
+    first = max(first, 1)
+    last = min(last, n - 2)
+    # the regime of every node is decided from the state at the start of the sweep
+    for i in range(1, n - 1):
+        coefficient = 0.5 * (xi[i - 1] + 2.0 * xi[i] + xi[i + 1]) / (h * h)
+        if i == 1:
+            d_wedge = rho[1] * K[0] - rho[0] * K[1]
+        else:
+            d_wedge = 1.5 * rho[i] * K[0] - 2.0 * rho[i - 1] * K[1] + 0.5 * rho[i - 2] * K[2]
+        jacobi[i] = coefficient < switch * abs(inv_pi * d_wedge / h)
+    for i in range(first, last + 1):
+        if dry[i]:
+            continue
+        left = 0.5 * (xi[i - 1] + xi[i])
+        right = 0.5 * (xi[i] + xi[i + 1])
+        poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
+        if i == 1:
+            wedge = rho[1] * H[1] - rho[0] * H[0]
+        else:
+            wedge = 1.5 * rho[i] * H[i] - 2.0 * rho[i - 1] * H[i - 1] + 0.5 * rho[i - 2] * H[i - 2]
+        r = f[i] - (poiseuille - wedge / h)
+        diagonal, off_diagonal = local_derivatives(i, P, H, rho, xi, dlx, drh, h, K)
+        if not jacobi[i]:
+            if diagonal == 0.0:
+                continue
+            new = P[i] + omega_gs * r / diagonal
+            if new < 0.0:
+                new = 0.0
+            change = new - P[i]
+            if change != 0.0:
+                P[i] = new
+                low = max(i - window, 0)
+                high = min(i + window, n - 1)
+                for m in range(low, high + 1):
+                    H[m] -= inv_pi * K[abs(m - i)] * change
+                for m in range(max(low, i - 1), min(high, i + 1) + 1):
+                    r_m = density_ratio(P[m], density_code, params)
+                    rho[m] = r_m
+                    hm = H[m]
+                    xi[m] = r_m * hm * hm * hm * math.exp(-log_viscosity(P[m], viscosity_code, params)) / lam
+        elif jacobi[i - 1]:
+            dipole = diagonal - off_diagonal
+            if dipole != 0.0:
+                delta[i] = r / dipole
+            count += 1
+        else:  # first node of a Jacobi region: its left neighbour is relaxed by Gauss-Seidel
+            if diagonal != 0.0:
+                delta[i] = r / diagonal
+            count += 1
+    for i in range(first, last + 1):
+        if jacobi[i]:
+            P[i] += omega_jacobi * delta[i]
+            if jacobi[i - 1]:
+                P[i - 1] -= omega_jacobi * delta[i]
+    for i in range(max(first - 1, 1), last + 1):
+        if P[i] < 0.0 or dry[i]:
+            P[i] = 0.0
+    return count
+
+
+# ----------------------------------------------------------------------------- registry of kernels
+PY = {
+    "nodal_coefficients": nodal_coefficients,
+    "reynolds_residual": reynolds_residual,
+    "relax_hybrid": relax_hybrid,
+    "deformation_direct": deformation_direct,
+    "mlmi_anterpolate": mlmi_anterpolate,
+    "mlmi_direct": mlmi_direct,
+    "mlmi_correction_tables": mlmi_correction_tables,
+    "mlmi_interpolate_correct": mlmi_interpolate_correct,
+}
+_COMPILED: dict = {}
+
+
+def compiled(name: str):
+    """The numba-compiled twin of kernel ``name`` (compiled on first call, cached on disk)."""
+    function = _COMPILED.get(name)
+    if function is None:
+        import numba
+
+        function = numba.njit(cache=True)(PY[name])
+        _COMPILED[name] = function
+    return function

@@ -1,0 +1,137 @@
+"""Result of a line-contact EHL solve: fields, derived film values, convergence record."""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+import numpy as np
+
+from .line_problem import LineEHLProblem
+
+__all__ = ["ConvergenceRecord", "LineEHLSolution"]
+
+
+@attrs.frozen
+class ConvergenceRecord:
+    """What a solver did: per-cycle (or per-iteration) history and the verdict.
+
+    ``residuals`` are h-scaled mean absolute complementarity residuals of the Reynolds
+    equation on the finest grid; ``load_errors`` the load-balance errors
+    h sum P - pi/2; ``work_units`` the cumulative work in finest-grid relaxation sweeps.
+    """
+
+    method: str
+    levels: int
+    nodes: int
+    residuals: tuple[float, ...]
+    load_errors: tuple[float, ...]
+    work_units: tuple[float, ...]
+    wall_time: float
+    converged: bool
+    message: str = ""
+    tolerance: float = float("nan")
+
+    @property
+    def cycles(self) -> int:
+        return len(self.residuals)
+
+    def to_frame(self):
+        """pandas DataFrame with one row per cycle."""
+        import pandas as pd
+
+        return pd.DataFrame({
+            "cycle": np.arange(1, self.cycles + 1),
+            "residual [-]": self.residuals,
+            "load error [-]": self.load_errors,
+            "work units [-]": self.work_units,
+        })
+
+    def summary(self) -> str:
+        state = "converged" if self.converged else "NOT converged"
+        last = f"{self.residuals[-1]:.3g}" if self.residuals else "n/a"
+        return (f"{self.method}: {state} in {self.cycles} cycles, residual {last}, "
+                f"{self.nodes} nodes / {self.levels} levels, {1e3 * self.wall_time:.1f} ms. {self.message}")
+
+
+@attrs.frozen
+class LineEHLSolution:
+    """Converged (or best) discrete solution of a :class:`~camcontact.ehl.line_problem.LineEHLProblem`.
+
+    Dimensionless fields on the grid: ``X`` (x/b), ``P`` (p/p_h), ``H`` (h R/b^2), and ``H0``.
+    """
+
+    problem: LineEHLProblem
+    level: int
+    X: np.ndarray = attrs.field(repr=False, eq=False)
+    P: np.ndarray = attrs.field(repr=False, eq=False)
+    H: np.ndarray = attrs.field(repr=False, eq=False)
+    H0: float
+    record: ConvergenceRecord
+
+    @property
+    def H_min(self) -> float:
+        """Minimum film H_min = min H over the grid."""
+        return float(self.H.min())
+
+    @property
+    def X_min(self) -> float:
+        """Position of the minimum film."""
+        return float(self.X[int(np.argmin(self.H))])
+
+    @property
+    def H_c(self) -> float:
+        """Central film H(0), linearly interpolated between the nodes around X = 0."""
+        return float(np.interp(0.0, self.X, self.H))
+
+    @property
+    def P_max(self) -> float:
+        return float(self.P.max())
+
+    @property
+    def spike(self) -> tuple[float, float] | None:
+        """(P_s, X_s) of the pressure spike: the most downstream of two or more local maxima of P
+        higher than 5 % of the maximum pressure (None when there is a single maximum, i.e. no
+        distinct spike)."""
+        P = self.P
+        interior = np.arange(1, P.size - 1)
+        significant = P[interior] > 0.05 * P.max()
+        peaks = interior[(P[interior] > P[interior - 1]) & (P[interior] >= P[interior + 1]) & significant]
+        if peaks.size < 2:
+            return None
+        last = int(peaks[-1])
+        return float(P[last]), float(self.X[last])
+
+    # ---------------------------------------------------------------- dimensional
+    def dimensional(self, R: float, w: float, E_reduced: float) -> dict:
+        """SI fields and films of the contact the problem came from: R [m], w [N/m], E' [Pa]."""
+        scales = self.problem.scales(R, w, E_reduced)
+        spike = self.spike
+        return {
+            "x": self.X * scales["b"], "p": self.P * scales["p_h"], "h": self.H * scales["h_scale"],
+            "h_min": self.H_min * scales["h_scale"], "x_min": self.X_min * scales["b"],
+            "h_c": self.H_c * scales["h_scale"], "p_max": self.P_max * scales["p_h"],
+            "p_spike": None if spike is None else spike[0] * scales["p_h"],
+            "x_spike": None if spike is None else spike[1] * scales["b"],
+            "b": scales["b"], "p_h": scales["p_h"],
+        }
+
+    def moes_film(self) -> tuple[float, float]:
+        """(H_c, H_min) in Moes's scaling H_Moes = (h/R)(2U)^-1/2 = (8 M / pi) H."""
+        factor = 8.0 * self.problem.M / math.pi
+        return self.H_c * factor, self.H_min * factor
+
+    def plot(self, ax=None):
+        """Pressure and film over X (matplotlib)."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(7, 4))
+        ax.plot(self.X, self.P, label="P = p/p_h")
+        ax.set(xlabel="X = x/b", ylabel="P", title=f"M = {self.problem.M:.4g}, L = {self.problem.L:.4g}, "
+               f"{self.X.size} nodes")
+        twin = ax.twinx()
+        twin.plot(self.X, self.H, color="tab:orange", label="H = h R/b²")
+        twin.set_ylabel("H")
+        twin.set_ylim(0, max(4 * self.H_min, 1e-12) if self.H_min > 0 else None)
+        return ax
