@@ -51,7 +51,7 @@ BUILTIN_MODULES: dict[str, tuple[str, ...]] = {
         "camcontact.models.viscosity_temperature",
     ),
     "density_laws": ("camcontact.models.density",),
-    "film_models": ("camcontact.models.film_line", "camcontact.models.film_point"),
+    "film_models": ("camcontact.models.film_line", "camcontact.models.film_point", "camcontact.models.film_multigrid"),
     "friction_models": (),
     "wear_models": (),
     "life_models": (),

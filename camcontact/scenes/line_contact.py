@@ -8,9 +8,10 @@ Model slots (``Analysis(models=...)``):
 ``approach``
     ``"hamrock"`` (default) or ``"palmgren"`` (needs ``load`` and ``length``).
 
-Effects: ``elasticity`` and ``piezoviscosity`` (on by default), ``compressibility`` (only
-changes the density law handed to numerical solvers) and ``thermal`` (inlet shear-heating
-reduction of the film, needs the lubricant's thermal conductivity and a temperature law).
+Effects: ``elasticity``, ``piezoviscosity`` and ``compressibility`` (on by default; the last
+only changes the density law handed to the numerical solver) and ``thermal`` (inlet
+shear-heating reduction of the film, needs the lubricant's thermal conductivity and a
+temperature law).
 """
 
 from __future__ import annotations
@@ -37,7 +38,10 @@ from ..models.film_thermal import inlet_heating_factor, slide_roll_measure, ther
 __all__ = ["DEFAULT_EFFECTS", "SUPPORTED_EFFECTS", "build_line_contact"]
 
 SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "thermal"})
-DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity"})
+#: compressibility is on by default: numerical EHL conventionally includes it (with an
+#: incompressible lubricant the pressure spike grows without bound under grid refinement at
+#: high L); the film formulas are not affected by it
+DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
 DEFAULT_FILM = "pan_hamrock"
 DEFAULT_OUTPUTS = (
     "E_reduced", "R", "w", "u_m", "b", "p_h", "approach", "tau_max", "z_tau_max", "tau_xz_range",
@@ -218,6 +222,9 @@ def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo:
         state = {**s, "alpha": s["alpha_effective"]}
         produced = model(state)
         messages = model.check_validity({k: s[k] for k in ("U", "G", "W", "M", "L")} | dict(produced))
+        record = produced.get("convergence")
+        if record is not None and not record.converged:
+            messages.append(f"numerical solution not converged: {record.message}")
         result = {f"{q}_isothermal": produced[q] for q in films}
         result["film_validity"] = "ok" if not messages else "; ".join(messages)
         return result
@@ -259,7 +266,8 @@ def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo:
              model="" if lubricant is None else f"{lubricant.viscosity_temperature_law}/{lubricant.viscosity_pressure_law}"),
         Step("ehl_groups", ("w", "R", "E_reduced", "u_m", "eta0", "alpha"),
              ("alpha_effective", "U", "G", "W", "M", "L"), run_groups, check=check_piezo),
-        Step("film", (*LINE_INPUTS[:4], "eta0", "alpha_effective", "U", "G", "W", "M", "L"),
+        Step("film", (*LINE_INPUTS[:4], "eta0", "alpha_effective", "U", "G", "W", "M", "L",
+                      *(("lubricant_state", "density_law") if "lubricant_state" in model.requires else ())),
              (*(f"{q}_isothermal" for q in films), "film_validity"), run_film,
              model=model_name, version=getattr(model, "version", ""), identity=id(model)),
         Step("film_thickness", (*(f"{q}_isothermal" for q in films), *(("thermal_factor",) if thermal else ())),

@@ -143,7 +143,7 @@ def test_effect_piezoviscosity_off_needs_a_capable_model(contact):
 
     instance = cc.Analysis(contact, outputs=["h_c"], effects=["elasticity"], models={"film": Moes()}).run()
     assert instance["h_c"] == pytest.approx(iso["h_c"], rel=1e-14)
-    assert cc.Analysis(contact, outputs=["b"]).run().effects == {"elasticity", "piezoviscosity"}
+    assert cc.Analysis(contact, outputs=["b"]).run().effects == {"elasticity", "piezoviscosity", "compressibility"}
     # independent: Moes isoviscous-elastic limit, L = 0, evaluated from the formula parts
     M = iso["M"]
     h_ri, h_ei = 3.0 / M, 2.621 * M ** -0.2
