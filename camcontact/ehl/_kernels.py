@@ -170,30 +170,6 @@ def density_ratio(P, density_code, params):
 
 
 @register_jitable
-def dlog_xi_dp(P, viscosity_code, density_code, params):
-    """d ln(xi)/dP at fixed H: d ln(rho)/dP - d ln(eta)/dP (zero for P <= 0)."""
-    if P <= 0.0:
-        return 0.0
-    if viscosity_code == 0:
-        dlog_eta = params[0]
-    else:
-        dlog_eta = params[2] * params[3] * params[1] * (1.0 + P * params[1]) ** (params[3] - 1.0)
-    dlog_rho = 0.0
-    if density_code == 1:
-        q = P * params[4]
-        dlog_rho = params[4] * (params[5] - 1.0) / ((1.0 + q) * (1.0 + params[5] * q))
-    return dlog_rho - dlog_eta
-
-
-@register_jitable
-def drho_dp(P, density_code, params):
-    if density_code == 0 or P <= 0.0:
-        return 0.0
-    q = P * params[4]
-    return params[4] * (params[5] - 1.0) / ((1.0 + q) * (1.0 + q))
-
-
-@register_jitable
 def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K):
     """(dL_i/dP_i, dL_i/dP_{i-1}) of the discrete operator, local terms only.
 
@@ -251,6 +227,39 @@ def nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi)
         xi[i] = r * hi * hi * hi * math.exp(-log_viscosity(P[i], viscosity_code, params)) / lam
 
 
+@register_jitable
+def nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, drh):
+    """:func:`nodal_coefficients` plus d ln(xi)/dP and d rho/dP, sharing one log1p and exp per node."""
+    for i in range(P.shape[0]):
+        p = P[i]
+        hi = H[i]
+        if p <= 0.0:
+            rho[i] = 1.0
+            xi[i] = hi * hi * hi / lam
+            dlx[i] = 0.0
+            drh[i] = 0.0
+            continue
+        if viscosity_code == 0:
+            log_eta = params[0] * p
+            dlog_eta = params[0]
+        else:
+            base = p * params[1]
+            power = math.exp(params[3] * math.log1p(base))  # (1 + p/p0')^z
+            log_eta = params[2] * (power - 1.0)
+            dlog_eta = params[2] * params[3] * params[1] * power / (1.0 + base)
+        if density_code == 1:
+            q = p * params[4]
+            r = (1.0 + params[5] * q) / (1.0 + q)
+            d_r = params[4] * (params[5] - 1.0) / ((1.0 + q) * (1.0 + q))
+        else:
+            r = 1.0
+            d_r = 0.0
+        rho[i] = r
+        xi[i] = r * hi * hi * hi * math.exp(-log_eta) / lam
+        dlx[i] = d_r / r - dlog_eta
+        drh[i] = d_r
+
+
 def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, out):
     """out_i = L_i(P, H) at interior nodes (Tsuha 2015 Eqs. 5.38, 5.42); boundary entries 0."""
     n = P.shape[0]
@@ -293,14 +302,11 @@ def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega
     n = P.shape[0]
     rho = np.empty(n)
     xi = np.empty(n)
-    nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi)
-    delta = np.zeros(n)
-    jacobi = np.zeros(n, dtype=np.bool_)
     dlx = np.empty(n)
     drh = np.empty(n)
-    for i in range(n):
-        dlx[i] = dlog_xi_dp(P[i], viscosity_code, density_code, params)
-        drh[i] = drho_dp(P[i], density_code, params)
+    nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, drh)
+    delta = np.zeros(n)
+    jacobi = np.zeros(n, dtype=np.bool_)
     count = 0
     inv_pi = 1.0 / math.pi
     first = max(first, 1)

@@ -26,7 +26,7 @@ __all__ = ["newton_complementarity", "solve_reference"]
 
 
 def _jacobian(grid: LineGrid, P: np.ndarray, H: np.ndarray, K_over_pi: np.ndarray):
-    """dL/dP (interior rows, all columns) and dL/dH0 of the discrete operator."""
+    """dL/dP (interior rows, all columns) and dL/dH0 of the discrete operator (vectorised)."""
     problem, h, n = grid.problem, grid.h, grid.n
     rho = problem.density_ratio(P)
     active = P >= 0.0  # the laws use max(P, 0): right-hand derivatives at 0, none below
@@ -38,23 +38,30 @@ def _jacobian(grid: LineGrid, P: np.ndarray, H: np.ndarray, K_over_pi: np.ndarra
     with np.errstate(divide="ignore", invalid="ignore"):
         dxi_dP = xi * (np.where(rho > 0, drho / rho, 0.0) - dlogeta)
     half = 0.5 * (xi[1:] + xi[:-1])
+    i = np.arange(1, n - 1)
+    hh = h * h
+    a = (P[i - 1] - P[i]) / hh
+    c = (P[i + 1] - P[i]) / hh
     direct = np.zeros((n, n))  # explicit dependence on P (same node / neighbours)
     dL_dH = np.zeros((n, n))  # dependence through the nodal films H_m
-    for i in range(1, n - 1):
-        a = (P[i - 1] - P[i]) / (h * h)
-        c = (P[i + 1] - P[i]) / (h * h)
-        coef = {i - 1: 0.5 * a, i: 0.5 * (a + c), i + 1: 0.5 * c}
-        direct[i, i - 1] += half[i - 1] / (h * h)
-        direct[i, i] -= (half[i - 1] + half[i]) / (h * h)
-        direct[i, i + 1] += half[i] / (h * h)
-        for m, value in coef.items():
-            direct[i, m] += value * dxi_dP[m]
-            dL_dH[i, m] += value * dxi_dH[m]
-        weights = ((0, 1.0), (1, -1.0)) if i == 1 else ((0, 1.5), (1, -2.0), (2, 0.5))
-        for k, wk in weights:
-            m = i - k
-            direct[i, m] -= wk * drho[m] * H[m] / h
-            dL_dH[i, m] -= wk * rho[m] / h
+    direct[i, i - 1] += half[i - 1] / hh
+    direct[i, i] -= (half[i - 1] + half[i]) / hh
+    direct[i, i + 1] += half[i] / hh
+    for offset, weight in ((-1, 0.5 * a), (0, 0.5 * (a + c)), (1, 0.5 * c)):
+        m = i + offset
+        direct[i, m] += weight * dxi_dP[m]
+        dL_dH[i, m] += weight * dxi_dH[m]
+    # wedge: first-order at i = 1, second-order upwind elsewhere
+    wedge = [((0, 1.0), (1, -1.0))] + [((0, 1.5), (1, -2.0), (2, 0.5))] * (n - 3)
+    for k, weight in ((0, 1.5), (1, -2.0), (2, 0.5)):
+        rows = i[1:]
+        m = rows - k
+        direct[rows, m] -= weight * drho[m] * H[m] / h
+        dL_dH[rows, m] -= weight * rho[m] / h
+    for k, weight in wedge[0]:
+        m = 1 - k
+        direct[1, m] -= weight * drho[m] * H[m] / h
+        dL_dH[1, m] -= weight * rho[m] / h
     if problem.elastic:
         J_P = direct - dL_dH @ K_over_pi
     else:
@@ -64,7 +71,7 @@ def _jacobian(grid: LineGrid, P: np.ndarray, H: np.ndarray, K_over_pi: np.ndarra
 
 
 def _fischer_burmeister(a, b):
-    r = np.sqrt(a * a + b * b)
+    r = np.hypot(a, b)  # no overflow for huge residuals of a wild iterate
     phi = a + b - r
     safe = np.where(r > 0, r, 1.0)
     da = np.where(r > 0, 1.0 - a / safe, 1.0 - 1.0 / math.sqrt(2.0))
@@ -139,10 +146,12 @@ def newton_complementarity(grid: LineGrid, P: np.ndarray, H0: float, *, f: np.nd
             P_new = P.copy()
             P_new[interior] += t * step[:m]
             H0_new = H0 + t * step[m]
-            H_new, L_new = state(P_new, H0_new)
-            phi_new, _, _ = _fischer_burmeister(P_new[interior], -scale * L_new[interior])
-            load_new = grid.load_error(P_new) - f_load
-            if np.all(np.isfinite(phi_new)) and float(phi_new @ phi_new + load_new**2) <= (1 - 1e-4 * t) * merit:
+            with np.errstate(over="ignore", invalid="ignore"):  # a wild trial step is simply rejected
+                H_new, L_new = state(P_new, H0_new)
+                phi_new, _, _ = _fischer_burmeister(P_new[interior], -scale * L_new[interior])
+                load_new = grid.load_error(P_new) - f_load
+                trial = float(phi_new @ phi_new + load_new**2)
+            if np.isfinite(trial) and trial <= (1 - 1e-4 * t) * merit:
                 break
             t *= 0.5
         else:

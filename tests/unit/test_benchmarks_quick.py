@@ -24,3 +24,21 @@ def test_hertz_elliptical_quick(tmp_path):
     # Hamrock & Brewe (1983) and Brewe & Hamrock (1977) fits: worst errors of a few per cent for r <= 100
     assert fits.filter(like="error").abs().to_numpy().max() < 6.0
     assert (frame["median time [us]"] > 0).all()
+
+
+def test_accuracy_vs_time_quick(tmp_path):
+    frame = _load("accuracy_vs_time").main(["--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "accuracy_vs_time.csv").exists()
+    grid = frame[frame["method"] == "multigrid"]
+    assert set(grid["level"]) == {4, 5, 6, 7} and (grid["status"] == "converged").all()
+    # the finest level is closer to the extrapolated reference than the coarsest, at every point
+    for (M, L), point in grid.groupby(["M", "L"]):
+        errors = point.set_index("level")["error H_c [%]"].abs()
+        assert errors[7] < errors[4]
+    formulas = frame[frame["method"] != "multigrid"]
+    assert set(formulas["method"]) == {"grubin", "dowson_higginson", "dowson_toyoda", "pan_hamrock", "moes"}
+
+
+def test_ehl_speed_quick(tmp_path):
+    frame = _load("ehl_speed").main(["--quick", "--out", str(tmp_path)])
+    assert list(frame["nodes"]) == [225, 449, 897] and frame["converged"].all()

@@ -1,0 +1,198 @@
+"""What accuracy costs in time: line-contact film formulas versus the multigrid solver.
+
+For each point (M, L) of a grid over the Moes map the script solves the line-contact EHL
+problem by FAS multigrid on levels 4..12 (n = 14 2^(k-1) + 1 nodes) and evaluates every line
+film formula, then reports the error of the central film H_c and of the minimum film H_min
+against a reference: the finest converged multigrid solution, Richardson-extrapolated from the
+three finest levels (observed order, clamped to 1..3), and the median wall time of each method.
+
+Films are compared in Moes's scaling H = (h/R)(2U)^-1/2, in which the multigrid result is
+(8M/pi) H_Hertz. Formulas other than Moes's need the Hamrock groups separately: they are
+evaluated at 2U = 2e-11 (W' = M (2U)^1/2, G = L (2U)^-1/4); their error depends somewhat on that
+choice.
+
+    python benchmarks/accuracy_vs_time.py                 # full: M 5..1000 x L 2..20, levels 4..12
+    python benchmarks/accuracy_vs_time.py --quick         # 2 x 2 points, levels 4..7 (the tests run this)
+    python benchmarks/accuracy_vs_time.py --viscosity barus --density incompressible
+
+Writes ``accuracy_vs_time.csv`` (one row per point x method x level; a ``status`` column says
+converged / not converged / failed) and ``accuracy_vs_time.png`` (log-log error vs time, the
+Pareto front of each method) into ``--out`` (default ``benchmarks/results``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import statistics
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from camcontact import registry
+from camcontact.ehl.line_multigrid import solve_multigrid
+from camcontact.ehl.line_problem import LineEHLProblem, grid_points
+from camcontact.errors import ConvergenceError, ConvergenceWarning
+
+FORMULAS = ("grubin", "dowson_higginson", "dowson_toyoda", "pan_hamrock", "moes")
+TWO_U = 2e-11
+
+
+def richardson(values: list[float]) -> tuple[float, float]:
+    """(extrapolated value, observed order) from the three finest of ``values`` (coarse to fine)."""
+    a, b, c = values[-3:]
+    if b == c:
+        return c, float("nan")
+    ratio = abs((b - a) / (c - b)) if c != b else 4.0
+    order = min(max(math.log2(ratio), 1.0), 3.0) if ratio > 0 else 2.0
+    return c + (c - b) / (2.0**order - 1.0), order
+
+
+def formula_films(M: float, L: float) -> dict[str, tuple[float | None, float | None, float]]:
+    """(H_c, H_min) in Moes scaling and the median time [s] of each formula at (M, L)."""
+    R, E = 0.01, 2.2e11
+    U = 0.5 * TWO_U
+    W = M * TWO_U**0.5
+    G = L * TWO_U**-0.25
+    state = dict(R=R, w=W * E * R, E_reduced=E, u_m=U * E * R / 0.05, eta0=0.05, alpha=G / E)
+    results = {}
+    for name in FORMULAS:
+        model = registry.get("film_models", name)
+        if L == 0 and name != "moes":
+            continue
+        out = model(state)
+        scale = 1.0 / (R * TWO_U**0.5)
+        calls = 200
+        start = time.perf_counter()
+        for _ in range(calls):
+            model(state)
+        seconds = (time.perf_counter() - start) / calls
+        results[name] = (out.get("h_c", None) and out["h_c"] * scale, out.get("h_min", None) and out["h_min"] * scale,
+                         seconds)
+    return results
+
+
+def run(Ms, Ls, levels, repeats, viscosity, density, progress=True) -> pd.DataFrame:
+    rows = []
+    points = [(M, L) for M in Ms for L in Ls]
+    for index, (M, L) in enumerate(points, 1):
+        problem = LineEHLProblem(M=M, L=L, viscosity=viscosity, density=density, alpha=2.2e-8, z=0.68,
+                                 pressure_scale=None if L > 0 or density == "incompressible" else 1e9)
+        factor = 8.0 * M / math.pi
+        results = {}
+        for level in levels:
+            times, status, solution = [], "converged", None
+            for _ in range(repeats):
+                start = time.perf_counter()
+                try:
+                    with warnings.catch_warnings():
+                        warnings.simplefilter("ignore", ConvergenceWarning)
+                        solution = solve_multigrid(problem, level)
+                except ConvergenceError as error:
+                    status = f"failed: {str(error).split(':')[-1].strip()[:60]}"
+                    solution = None
+                    break
+                times.append(time.perf_counter() - start)
+                if not solution.record.converged:
+                    status = "not converged"
+            results[level] = (solution, status, statistics.median(times) if times else float("nan"))
+        converged = [k for k in levels if results[k][1] == "converged"]
+        if len(converged) >= 3:
+            ref_c, order_c = richardson([results[k][0].H_c * factor for k in converged])
+            ref_m, order_m = richardson([results[k][0].H_min * factor for k in converged])
+        else:
+            ref_c = ref_m = order_c = order_m = float("nan")
+        for level in levels:
+            solution, status, seconds = results[level]
+            rows.append({
+                "M": M, "L": L, "method": "multigrid", "level": level, "nodes": grid_points(level),
+                "H_c": solution.H_c * factor if solution else float("nan"),
+                "H_min": solution.H_min * factor if solution else float("nan"),
+                "time [s]": seconds, "cycles": solution.record.cycles if solution else 0, "status": status,
+            })
+        for name, (H_c, H_min, seconds) in formula_films(M, L).items():
+            rows.append({"M": M, "L": L, "method": name, "level": 0, "nodes": 0,
+                         "H_c": np.nan if H_c is None else H_c, "H_min": np.nan if H_min is None else H_min,
+                         "time [s]": seconds, "cycles": 0, "status": "formula"})
+        for row in rows:
+            if row["M"] == M and row["L"] == L:
+                row["reference H_c"], row["reference H_min"] = ref_c, ref_m
+                row["observed order H_c"], row["observed order H_min"] = order_c, order_m
+        if progress:
+            print(f"[{index}/{len(points)}] M = {M:g}, L = {L:g}: reference H_c = {ref_c:.5g}, "
+                  f"H_min = {ref_m:.5g} ({len(converged)}/{len(levels)} levels converged)", flush=True)
+    frame = pd.DataFrame(rows)
+    frame["error H_c [%]"] = 100 * (frame["H_c"] / frame["reference H_c"] - 1)
+    frame["error H_min [%]"] = 100 * (frame["H_min"] / frame["reference H_min"] - 1)
+    return frame
+
+
+def summary(frame: pd.DataFrame) -> pd.DataFrame:
+    """Median |error| and median time per method (and level) over the map."""
+    keyed = frame.assign(key=np.where(frame["method"] == "multigrid", "multigrid L" + frame["level"].astype(str),
+                                      frame["method"]))
+    table = keyed.groupby("key").agg(**{
+        "median |error H_c| [%]": ("error H_c [%]", lambda s: s.abs().median()),
+        "median |error H_min| [%]": ("error H_min [%]", lambda s: s.abs().median()),
+        "median time [s]": ("time [s]", "median"),
+        "failed or not converged": ("status", lambda s: int(((s != "converged") & (s != "formula")).sum())),
+    })
+    return table.sort_values("median time [s]")
+
+
+def plot(frame: pd.DataFrame, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    table = summary(frame)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, column in zip(axes, ("median |error H_c| [%]", "median |error H_min| [%]")):
+        grid = table[table.index.str.startswith("multigrid")]
+        order = sorted(grid.index, key=lambda k: int(k.split("L")[-1]))
+        ax.plot(grid.loc[order, "median time [s]"], grid.loc[order, column], "o-", label="multigrid (levels)")
+        for key in order:
+            ax.annotate(key.split(" ")[-1], (grid.loc[key, "median time [s]"], grid.loc[key, column]), fontsize=7)
+        formulas = table[~table.index.str.startswith("multigrid")].dropna(subset=[column])
+        ax.scatter(formulas["median time [s]"], formulas[column], marker="s", color="tab:red", label="formulas")
+        for key in formulas.index:
+            ax.annotate(key, (formulas.loc[key, "median time [s]"], formulas.loc[key, column]), fontsize=7)
+        ax.set(xscale="log", yscale="log", xlabel="median wall time per film [s]", ylabel=column,
+               title=column.replace("median |error ", "").replace("| [%]", "") + " error vs time")
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def main(argv: list[str] | None = None) -> pd.DataFrame:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="2 x 2 points, levels 4..7, one run each")
+    parser.add_argument("--viscosity", default="roelands", choices=("roelands", "barus"))
+    parser.add_argument("--density", default="dowson_higginson", choices=("dowson_higginson", "incompressible"))
+    parser.add_argument("--repeats", type=int, default=None, help="runs per level (median); default 3, quick 1")
+    parser.add_argument("--out", default=str(Path(__file__).parent / "results"), help="output folder")
+    args = parser.parse_args(argv)
+    if args.quick:
+        Ms, Ls, levels, repeats = (20, 100), (5, 10), range(4, 8), args.repeats or 1
+    else:
+        Ms, Ls, levels, repeats = (5, 10, 20, 50, 100, 200, 500, 1000), (2, 5, 10, 15, 20), range(4, 13), args.repeats or 3
+    frame = run(Ms, Ls, list(levels), repeats, args.viscosity, args.density)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    frame.to_csv(out / "accuracy_vs_time.csv", index=False)
+    try:
+        plot(frame, out / "accuracy_vs_time.png")
+    except ImportError:
+        print("matplotlib not installed: no plot")
+    print(summary(frame).to_string(float_format=lambda v: f"{v:.3g}"))
+    print(f"written to {out}")
+    return frame
+
+
+if __name__ == "__main__":
+    main()
