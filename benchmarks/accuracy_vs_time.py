@@ -25,12 +25,16 @@ from __future__ import annotations
 import argparse
 import math
 import statistics
+import sys
 import time
 import warnings
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # the shared benchmarks/_output.py
+from _output import write_results  # noqa: E402
 
 from camcontact import registry
 from camcontact.ehl.line_multigrid import solve_multigrid
@@ -182,16 +186,7 @@ def main(argv: list[str] | None = None) -> pd.DataFrame:
     else:
         Ms, Ls, levels, repeats = (5, 10, 20, 50, 100, 200, 500, 1000), (2, 5, 10, 15, 20), range(4, 13), args.repeats or 3
     frame = run(Ms, Ls, list(levels), repeats, args.viscosity, args.density)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    frame.to_csv(out / "accuracy_vs_time.csv", index=False)
-    try:
-        plot(frame, out / "accuracy_vs_time.png")
-    except ImportError:
-        print("matplotlib not installed: no plot")
-    print(summary(frame).to_string(float_format=lambda v: f"{v:.3g}"))
-    print(f"written to {out}")
-    return frame
+    return write_results(frame, args.out, "accuracy_vs_time", plot, summary)
 
 
 if __name__ == "__main__":

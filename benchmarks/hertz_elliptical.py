@@ -16,11 +16,15 @@ from __future__ import annotations
 
 import argparse
 import statistics
+import sys
 import timeit
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # the shared benchmarks/_output.py
+from _output import write_results  # noqa: E402
 
 from camcontact.contact.hertz_elliptical import METHODS, hertz_elliptical
 
@@ -81,16 +85,7 @@ def main(argv: list[str] | None = None) -> pd.DataFrame:
     args = parser.parse_args(argv)
     ratios = np.logspace(0, 2, 5 if args.quick else 25)
     frame = measure(ratios, repeats=3 if args.quick else 7, calls=20 if args.quick else 200)
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    frame.to_csv(out / "hertz_elliptical.csv", index=False)
-    try:
-        plot(frame, out / "hertz_elliptical.png")
-    except ImportError:
-        print("matplotlib not installed: no plot")
-    print(summary(frame).to_string(float_format=lambda v: f"{v:.3g}"))
-    print(f"written to {out}")
-    return frame
+    return write_results(frame, args.out, "hertz_elliptical", plot, summary)
 
 
 if __name__ == "__main__":

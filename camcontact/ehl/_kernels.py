@@ -260,6 +260,19 @@ def nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, dr
         drh[i] = d_r
 
 
+@register_jitable
+def operator_at(i, P, H, rho, xi, h):
+    """L_i: central Poiseuille term minus the upwind wedge (first order at i = 1) (Eqs. 5.38, 5.42)."""
+    left = 0.5 * (xi[i - 1] + xi[i])
+    right = 0.5 * (xi[i] + xi[i + 1])
+    poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
+    if i == 1:
+        wedge = rho[1] * H[1] - rho[0] * H[0]
+    else:
+        wedge = 1.5 * rho[i] * H[i] - 2.0 * rho[i - 1] * H[i - 1] + 0.5 * rho[i - 2] * H[i - 2]
+    return poiseuille - wedge / h
+
+
 def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, out):
     """out_i = L_i(P, H) at interior nodes (Tsuha 2015 Eqs. 5.38, 5.42); boundary entries 0."""
     n = P.shape[0]
@@ -269,14 +282,7 @@ def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, out):
     out[0] = 0.0
     out[n - 1] = 0.0
     for i in range(1, n - 1):
-        left = 0.5 * (xi[i - 1] + xi[i])
-        right = 0.5 * (xi[i] + xi[i + 1])
-        poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
-        if i == 1:
-            wedge = rho[1] * H[1] - rho[0] * H[0]
-        else:
-            wedge = 1.5 * rho[i] * H[i] - 2.0 * rho[i - 1] * H[i - 1] + 0.5 * rho[i - 2] * H[i - 2]
-        out[i] = poiseuille - wedge / h
+        out[i] = operator_at(i, P, H, rho, xi, h)
 
 
 def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
@@ -322,14 +328,7 @@ def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega
     for i in range(first, last + 1):
         if dry[i]:
             continue
-        left = 0.5 * (xi[i - 1] + xi[i])
-        right = 0.5 * (xi[i] + xi[i + 1])
-        poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
-        if i == 1:
-            wedge = rho[1] * H[1] - rho[0] * H[0]
-        else:
-            wedge = 1.5 * rho[i] * H[i] - 2.0 * rho[i - 1] * H[i - 1] + 0.5 * rho[i - 2] * H[i - 2]
-        r = f[i] - (poiseuille - wedge / h)
+        r = f[i] - operator_at(i, P, H, rho, xi, h)
         diagonal, off_diagonal = local_derivatives(i, P, H, rho, xi, dlx, drh, h, K)
         if not jacobi[i]:
             if diagonal == 0.0:
