@@ -192,7 +192,7 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K):
         if weight == 0.0:
             continue
         dxi_dp = xi[m] * dlx[m]
-        dxi_dh = 3.0 * xi[m] / H[m] if H[m] != 0.0 else 0.0
+        dxi_dh = 3.0 * xi[m] / H[m] if H[m] > 0.0 else 0.0
         if m == i:
             d_i += weight * dxi_dp
         elif m == i - 1:
@@ -223,7 +223,7 @@ def nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi)
     for i in range(P.shape[0]):
         r = density_ratio(P[i], density_code, params)
         rho[i] = r
-        hi = H[i]
+        hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
         xi[i] = r * hi * hi * hi * math.exp(-log_viscosity(P[i], viscosity_code, params)) / lam
 
 
@@ -232,7 +232,7 @@ def nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, dr
     """:func:`nodal_coefficients` plus d ln(xi)/dP and d rho/dP, sharing one log1p and exp per node."""
     for i in range(P.shape[0]):
         p = P[i]
-        hi = H[i]
+        hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
         if p <= 0.0:
             rho[i] = 1.0
             xi[i] = hi * hi * hi / lam
@@ -346,7 +346,7 @@ def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega
                 for m in range(max(low, i - 1), min(high, i + 1) + 1):
                     r_m = density_ratio(P[m], density_code, params)
                     rho[m] = r_m
-                    hm = H[m]
+                    hm = max(H[m], 0.0)
                     xi[m] = r_m * hm * hm * hm * math.exp(-log_viscosity(P[m], viscosity_code, params)) / lam
         elif jacobi[i - 1]:
             dipole = diagonal - off_diagonal

@@ -33,8 +33,9 @@ def _jacobian(grid: LineGrid, P: np.ndarray, H: np.ndarray, K_over_pi: np.ndarra
     drho = problem.ddensity_ratio(P) * active
     e = np.exp(-problem.log_viscosity(P))
     dlogeta = problem.dlog_viscosity(P) * active
-    xi = rho * H**3 * e / problem.lam
-    dxi_dH = 3.0 * rho * H**2 * e / problem.lam
+    open_gap = np.maximum(H, 0.0)  # closed gaps (H <= 0) pass no pressure flow
+    xi = rho * open_gap**3 * e / problem.lam
+    dxi_dH = 3.0 * rho * open_gap**2 * e / problem.lam
     with np.errstate(divide="ignore", invalid="ignore"):
         dxi_dP = xi * (np.where(rho > 0, drho / rho, 0.0) - dlogeta)
     half = 0.5 * (xi[1:] + xi[:-1])
@@ -120,7 +121,11 @@ def newton_complementarity(grid: LineGrid, P: np.ndarray, H0: float, *, f: np.nd
     message = ""
     converged = False
     for _ in range(max_iterations):
-        J_P, J_H0 = _jacobian(grid, P, H, K_over_pi)
+        with np.errstate(over="ignore", invalid="ignore"):
+            J_P, J_H0 = _jacobian(grid, P, H, K_over_pi)
+        if not (np.all(np.isfinite(J_P)) and np.all(np.isfinite(J_H0))):
+            message = "non-finite Newton matrix (pressures beyond the viscosity law's range)"
+            break
         scale = 1.0 / np.maximum(np.abs(np.diag(J_P))[interior], 1e-300)
         phi, da, db = _fischer_burmeister(P[interior], -scale * L[interior])
         load = grid.load_error(P) - f_load
@@ -150,7 +155,7 @@ def newton_complementarity(grid: LineGrid, P: np.ndarray, H0: float, *, f: np.nd
                 H_new, L_new = state(P_new, H0_new)
                 phi_new, _, _ = _fischer_burmeister(P_new[interior], -scale * L_new[interior])
                 load_new = grid.load_error(P_new) - f_load
-                trial = float(phi_new @ phi_new + load_new**2)
+                trial = float(phi_new @ phi_new + load_new * load_new)  # ** would raise OverflowError
             if np.isfinite(trial) and trial <= (1 - 1e-4 * t) * merit:
                 break
             t *= 0.5

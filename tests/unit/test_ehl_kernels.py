@@ -88,3 +88,59 @@ def test_mlmi_twin_equals_compiled():
     P = np.where(np.abs(X) < 1, np.sqrt(np.clip(1 - X * X, 0, None)), 0.0)
     np.testing.assert_allclose(Deformation(n, h, "mlmi", compiled=False)(P), Deformation(n, h, "mlmi")(P),
                                rtol=1e-12, atol=1e-14)
+
+
+def test_closed_gap_passes_no_pressure_flow():
+    """Where the film is closed (H <= 0, e.g. on a coarse grid too coarse for a very thin film)
+    xi = rho H^3/(eta lambda) is 0, not negative: the numpy operator, the Python kernel and the
+    compiled kernel agree on a state with closed nodes, and the closed nodes carry only the wedge."""
+    from camcontact.ehl.line_operator import LineGrid
+
+    problem, X, h, P, H = _state()
+    H = H - 1.3  # close the gap over the middle of the contact
+    closed = H <= 0.0
+    assert 5 < closed.sum() < X.size - 5
+    grid = LineGrid(problem, X.size, "direct")
+    np.testing.assert_array_equal(grid.xi(P, H)[closed], 0.0)
+    assert np.all(grid.xi(P, H)[~closed] > 0.0)
+    codes, params = problem.law_codes, problem.law_parameters
+    python, compiled = np.empty(X.size), np.empty(X.size)
+    _kernels.PY["reynolds_residual"](P, H, h, problem.lam, *codes, params, python)
+    _kernels.compiled("reynolds_residual")(P, H, h, problem.lam, *codes, params, compiled)
+    np.testing.assert_allclose(python, grid.residual(P, H), rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(compiled, python, rtol=1e-12, atol=1e-12)
+    # a node whose three films are all closed: L_i is the wedge term alone
+    i = int(np.flatnonzero(closed[:-2] & closed[1:-1] & closed[2:])[0]) + 1
+    rho = problem.density_ratio(P)
+    wedge = (1.5 * rho[i] * H[i] - 2.0 * rho[i - 1] * H[i - 1] + 0.5 * rho[i - 2] * H[i - 2]) / h
+    assert python[i] == pytest.approx(-wedge, rel=1e-12)
+
+
+@pytest.mark.parametrize("problem", [LineEHLProblem(M=20, L=10, alpha=1.7e-8, z=0.68),
+                                     LineEHLProblem(M=20, L=0, viscosity="barus", density="incompressible")],
+                         ids=["roelands-dowson-higginson", "isoviscous"])
+def test_newton_jacobian_matches_finite_differences(problem):
+    """The reference solver's analytic Jacobian dL/dP (deformation included) and dL/dH0 equal
+    central differences of the operator, also with some closed-gap nodes."""
+    from camcontact.ehl.line_operator import LineGrid
+    from camcontact.ehl.line_reference import _jacobian
+
+    grid = LineGrid(problem, 57, "direct")
+    X = grid.X
+    P = np.where(np.abs(X) < 1, np.sqrt(np.clip(1 - X * X, 0, None)), 0.0) * 0.8 + 0.01
+    P[0] = P[-1] = 0.0
+    K_over_pi = kernel_coefficients(grid.h, grid.n)[np.abs(np.arange(grid.n)[:, None] - np.arange(grid.n)[None, :])] / math.pi
+    lowest = float(grid.film(P, 0.0).min())
+    for H0, closed in ((0.1 - lowest, False), (-0.03 - lowest, True)):  # open everywhere / partly closed
+        H = grid.film(P, H0)
+        assert bool(np.any(H <= 0.0)) == closed
+        J_P, J_H0 = _jacobian(grid, P, H, K_over_pi)
+        step = 1e-7
+        for j in (5, 20, 28, 40):
+            up, down = P.copy(), P.copy()
+            up[j] += step
+            down[j] -= step
+            numeric = (grid.residual(up, grid.film(up, H0)) - grid.residual(down, grid.film(down, H0))) / (2 * step)
+            np.testing.assert_allclose(J_P[1:-1, j], numeric[1:-1], rtol=1e-5, atol=1e-6 * np.abs(numeric).max())
+        numeric = (grid.residual(P, grid.film(P, H0 + 1e-7)) - grid.residual(P, grid.film(P, H0 - 1e-7))) / 2e-7
+        np.testing.assert_allclose(J_H0[1:-1], numeric[1:-1], rtol=1e-5, atol=1e-6 * np.abs(numeric).max())
