@@ -9,7 +9,7 @@ use of a model family) and compiles no numba kernel.
 
 from . import registry
 from .analysis import Analysis, Result
-from .components import Body, LineContact, Lubricant, Material
+from .components import Body, Cam, CamFollower, Follower, LineContact, Lubricant, Material, ValveTrain
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
 
@@ -18,8 +18,11 @@ __version__ = "0.1.0"
 __all__ = [
     "Analysis",
     "Body",
+    "Cam",
+    "CamFollower",
     "ConvergenceError",
     "ConvergenceWarning",
+    "Follower",
     "InputError",
     "LineContact",
     "Lubricant",
@@ -28,6 +31,7 @@ __all__ = [
     "Q_",
     "Result",
     "UnknownModelError",
+    "ValveTrain",
     "__version__",
     "registry",
     "ureg",

@@ -76,6 +76,10 @@ class SceneGraph:
     input_hints: Mapping[str, str] = attrs.field(factory=dict)
     plotter: Callable[..., Any] | None = attrs.field(default=None, repr=False)
     effects: frozenset = frozenset()  #: the effects in force (the scene's defaults if none were asked)
+    #: name of the input that indexes array outputs (e.g. ``"cam_angle"``), None for one-row scenes
+    index: str | None = None
+    #: the outputs that are arrays over ``index`` (the others are scalars: summaries)
+    per_index: frozenset = frozenset()
 
 
 @attrs.frozen
@@ -270,6 +274,8 @@ class Analysis:
                     records.append(StepRecord(step.name, step.model, step.version, label, elapsed))
                 state.update(cache[key])
             row = {name: state[name] for name in outputs}
+            if graph.index is not None:
+                row[graph.index] = state[graph.index]
             rows.append(row)
             outputs_union += [o for o in outputs if o not in outputs_union]
         if graph is not None:
@@ -285,6 +291,8 @@ class Analysis:
             effects=graph.effects if graph else frozenset(),
             plotter=graph.plotter if graph else None,
             scene=self.scene,
+            index=graph.index if graph else None,
+            per_index=graph.per_index if graph else frozenset(),
         )
 
     def steps(self, variant: str | None = None) -> list[str]:
@@ -305,6 +313,8 @@ class Result:
     effects: frozenset  #: effects in force
     plotter: Callable[..., Any] | None = attrs.field(default=None, repr=False, eq=False)
     scene: Any = attrs.field(default=None, repr=False, eq=False)
+    index: str | None = None  #: the input indexing array outputs (e.g. "cam_angle"), None for one-row results
+    per_index: frozenset = frozenset()  #: outputs that are arrays over ``index``
 
     def __getitem__(self, name: str) -> Any:
         """SI value of ``name`` (a list with one entry per variant when there are several)."""
@@ -314,10 +324,20 @@ class Result:
         return values[0] if len(values) == 1 else values
 
     def to_frame(self, units: Mapping[str, str] | None = None):
-        """pandas DataFrame, one row per variant, columns ``"name [unit]"`` (see :mod:`camcontact.report`)."""
+        """pandas DataFrame, columns ``"name [unit]"`` (see :mod:`camcontact.report`).
+
+        One row per variant; for a scene with an index (a cam cycle) one row per variant and index
+        value (cam angle), holding the per-angle outputs; its scalars are in :meth:`summary_frame`.
+        """
         from .report import result_frame
 
         return result_frame(self, units)
+
+    def summary_frame(self, units: Mapping[str, str] | None = None):
+        """pandas DataFrame of the scalar outputs (cycle summaries), one row per variant."""
+        from .report import result_frame
+
+        return result_frame(self, units, scalars=True)
 
     def steps_frame(self):
         """pandas DataFrame of the steps that ran: model, version, variant, wall time [s]."""

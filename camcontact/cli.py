@@ -32,6 +32,8 @@ def _units(pairs: list[str]) -> dict[str, str]:
 
 
 def _run(args: argparse.Namespace) -> int:
+    import pandas as pd
+
     from .report import text_table
     from .scene_file import load_scene
 
@@ -42,16 +44,30 @@ def _run(args: argparse.Namespace) -> int:
           + (f"; {len(analysis.variants)} variants" if len(analysis.variants) > 1 else ""))
     result = analysis.run()
     units = {**scene.units, **_units(args.units or [])}
-    frame = result.to_frame(units={k: v for k, v in units.items() if k in result.outputs})
+    known = set(result.outputs) | ({result.index} if result.index else set())
+    frame = result.to_frame(units={k: v for k, v in units.items() if k in known})
+    csv_path = Path(args.csv) if args.csv else Path(f"{Path(args.scene).stem if args.scene else 'default_scene'}_report.csv")
     print()
-    print(text_table(frame))
+    if result.index is None:
+        print(text_table(frame))
+    else:
+        summary = result.summary_frame(units={k: v for k, v in units.items() if k in result.outputs})
+        print("cycle summary:")
+        print(text_table(summary))
+        print()
+        every = max(1, len(frame) // (24 * max(1, len(result.variants))))
+        shown = frame.iloc[::every] if every > 1 else frame
+        print(f"per {result.index}" + (f" (every {every}th row of {len(frame)}; all rows in the CSV)" if every > 1 else "") + ":")
+        with pd.option_context("display.width", 250, "display.max_columns", 40, "display.max_colwidth", 28):
+            print(shown.to_string(index=False, float_format=lambda v: f"{v:.5g}"))
+        summary_path = csv_path.with_name(csv_path.stem + "_summary.csv")
+        summary.to_csv(summary_path, index=False)
     print()
     steps = result.steps_frame()
     print(f"{len(steps)} steps ran in {1e3 * result.wall_time:.1f} ms:")
     print(steps.to_string(index=False, float_format=lambda v: f"{v:.3f}"))
-    csv_path = Path(args.csv) if args.csv else Path(f"{Path(args.scene).stem if args.scene else 'default_scene'}_report.csv")
     frame.to_csv(csv_path, index=False)
-    print(f"\nreport written to {csv_path}")
+    print(f"\nreport written to {csv_path}" + (f" (cycle summary: {summary_path})" if result.index is not None else ""))
     if args.plot:
         try:
             import matplotlib

@@ -45,15 +45,15 @@ DISABLE_ENV = "CAMCONTACT_DISABLE_PLUGIN_AUTOLOAD"
 
 #: Modules holding the built-in models of each family (imported on first lookup).
 BUILTIN_MODULES: dict[str, tuple[str, ...]] = {
-    "motion_laws": (),
+    "motion_laws": ("camcontact.models.motion_laws",),
     "viscosity_laws": (
         "camcontact.models.viscosity_pressure",
         "camcontact.models.viscosity_temperature",
     ),
     "density_laws": ("camcontact.models.density",),
     "film_models": ("camcontact.models.film_line", "camcontact.models.film_point", "camcontact.models.film_multigrid"),
-    "friction_models": (),
-    "wear_models": (),
+    "friction_models": ("camcontact.models.friction",),
+    "wear_models": ("camcontact.models.wear",),
     "life_models": (),
     "traction_models": (),
 }

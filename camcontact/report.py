@@ -41,29 +41,43 @@ def convert(value: Any, si_unit: str, unit: str, name: str) -> Any:
         raise InputError(f"cannot report {name} [{si_unit}] in {unit!r}: {exc}") from None
 
 
-def result_frame(result: Result, units: Mapping[str, str] | None = None) -> pd.DataFrame:
+def result_frame(result: Result, units: Mapping[str, str] | None = None, *, scalars: bool = False) -> pd.DataFrame:
     """DataFrame of a :class:`~camcontact.analysis.Result`: one row per variant.
 
     ``units`` maps quantity names to display units (``{"h_min": "nm"}``); others use the
-    catalogue's display unit.
+    catalogue's display unit. A result with an index (a cam cycle) gives one row per variant
+    and index value with its per-index outputs, or with ``scalars=True`` one row per variant
+    with its scalar outputs (cycle summaries).
     """
     units = dict(units or {})
-    unknown = sorted(set(units) - set(result.outputs))
+    unknown = sorted(set(units) - set(result.outputs) - ({result.index} if result.index else set()))
     if unknown:
         raise InputError(f"units given for {unknown}, which are not outputs of this result {result.outputs}")
+
+    def cell(name: str, value: Any) -> tuple[str, Any]:
+        quantity = spec(name)
+        if quantity.si_unit is None:
+            return column_name(name, None), value
+        unit = units.get(name, quantity.display_unit)
+        return column_name(name, unit), convert(value, quantity.si_unit, unit, name)
+
+    indexed = result.index is not None and not scalars
+    names = [n for n in result.outputs if (n in result.per_index) == indexed] if result.index else list(result.outputs)
+    if indexed and result.index in names:
+        names.remove(result.index)
     records = []
     for label, row in zip(result.variants, result.rows):
-        record: dict[str, Any] = {}
-        if label:
-            record["variant"] = label
-        for name in result.outputs:
-            quantity = spec(name)
-            if quantity.si_unit is None:
-                record[column_name(name, None)] = row.get(name)
-                continue
-            unit = units.get(name, quantity.display_unit)
-            record[column_name(name, unit)] = convert(row.get(name), quantity.si_unit, unit, name)
-        records.append(record)
+        head: dict[str, Any] = {"variant": label} if label else {}
+        if not indexed:
+            records.append(head | dict(cell(name, row.get(name)) for name in names))
+            continue
+        index_column, index_values = cell(result.index, row[result.index])
+        index_values = np.atleast_1d(index_values)
+        # an output this variant does not give (None -> NaN) is broadcast over the index
+        columns = {column: np.broadcast_to(np.asarray(values, dtype=object if np.ndim(values) else None), index_values.shape)
+                   for column, values in (cell(name, row.get(name)) for name in names)}
+        for i, position in enumerate(index_values):
+            records.append(head | {index_column: position} | {column: values[i] for column, values in columns.items()})
     return pd.DataFrame.from_records(records)
 
 

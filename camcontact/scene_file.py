@@ -26,6 +26,10 @@ reported with the keys that are allowed. Layout::
     [contact.body2] ...
     [contact.lubricant]               # Lubricant fields
     nu40 = "575 cSt"
+
+A ``cam_follower`` scene's [contact] table holds :class:`~camcontact.components.CamFollower`
+fields, with nested [contact.cam] (its ``program`` a table of ``segments``), [contact.follower],
+[contact.valve_train] and [contact.lubricant] tables.
 """
 
 from __future__ import annotations
@@ -39,18 +43,32 @@ from typing import Any
 import attrs
 
 from .analysis import Analysis
-from .components import Body, LineContact, Lubricant, Material
+from .components import Body, Cam, CamFollower, Follower, LineContact, Lubricant, Material, ValveTrain
 from .errors import InputError
 
 __all__ = ["DEFAULT_SCENE", "Scene", "default_scene_text", "load_scene", "parse_scene"]
 
 DEFAULT_SCENE = "default_scene.toml"
 
-#: scene kind -> (component class of the [contact] table, nested component tables)
-_KINDS = {"line_contact": LineContact}
-_NESTED: dict[type, dict[str, type]] = {
+def _motion_program(table: Any, where: str) -> Any:
+    """A cam's ``program`` table: ``segments = [{law, start, end, lift_start, lift_end}, ...]``."""
+    from .kinematics.motion_program import MotionProgram
+
+    if not isinstance(table, Mapping) or set(table) != {"segments"} or not isinstance(table["segments"], list):
+        raise InputError(f"{where}: expected a table with one key, segments = [{{law = \"P-1\", start = \"0 deg\", "
+                         f"end = \"90 deg\", lift_start = \"0 mm\", lift_end = \"20 mm\"}}, ...]")
+    return MotionProgram.from_segments(table["segments"])
+
+
+#: scene kind -> component class of the [contact] table (the scene component)
+_KINDS = {"line_contact": LineContact, "cam_follower": CamFollower}
+#: nested tables: component class -> {field: component class, or a builder(table, where)}
+_NESTED: dict[type, dict[str, Any]] = {
     LineContact: {"body1": Body, "body2": Body, "lubricant": Lubricant},
     Body: {"material": Material},
+    CamFollower: {"cam": Cam, "follower": Follower, "valve_train": ValveTrain, "lubricant": Lubricant},
+    Cam: {"material": Material, "program": _motion_program},
+    Follower: {"material": Material},
 }
 _TOP_KEYS = {"scene", "name", "outputs", "effects", "models", "report", "contact"}
 
@@ -82,7 +100,12 @@ def _build(cls: type, table: Any, where: str) -> Any:
     arguments = {}
     for key, value in table.items():
         nested = _NESTED.get(cls, {}).get(key)
-        arguments[key] = _build(nested, value, f"{where}.{key}") if nested else value
+        if nested is None:
+            arguments[key] = value
+        elif attrs.has(nested):
+            arguments[key] = _build(nested, value, f"{where}.{key}")
+        else:
+            arguments[key] = nested(value, f"{where}.{key}")
     try:
         return cls(**arguments)
     except TypeError as exc:  # a missing required field

@@ -77,12 +77,16 @@ _NUMBER_THEN_UNIT = re.compile(
 )
 
 
+#: pseudo-dimension of plane angles: dimensionless in pint, but a unit (deg, rad, rev) is required
+ANGLE = "[angle]"
+
+
 def _dimensionality(dimension: str):
-    return ureg.get_dimensionality(dimension) if dimension != "[]" else ureg.get_dimensionality("")
+    return ureg.get_dimensionality(dimension) if dimension not in ("[]", ANGLE) else ureg.get_dimensionality("")
 
 
 def _example(dimension: str) -> str:
-    unit = _EXAMPLE_UNITS.get(dimension)
+    unit = "deg" if dimension == ANGLE else _EXAMPLE_UNITS.get(dimension)
     if unit is None:
         for key, value in _EXAMPLE_UNITS.items():
             if key != "[]" and _dimensionality(key) == _dimensionality(dimension):
@@ -166,6 +170,10 @@ def to_quantity(value: Any, dimension: str, *, where: str) -> pint.Quantity:
         raise InputError(
             f"{where} = {format_quantity(quantity)}: wrong dimension {quantity.dimensionality}; "
             f"expected {dimension}, e.g. {_example(dimension)}"
+        )
+    if dimension == ANGLE and quantity.unitless:
+        raise InputError(
+            f"{where} = {format_quantity(quantity)}: an angle needs its unit, e.g. '90 deg' or '1.5 rad'"
         )
     if not _finite(quantity.magnitude):
         raise InputError(f"{where} = {format_quantity(quantity)}: must be finite (got NaN or inf)")

@@ -99,12 +99,20 @@ class Multigrid(FilmModel):
         domain = self.domain if self.domain is not None else automatic_domain(first.M, first.L, self.elasticity)
         return attrs.evolve(first, domain=tuple(domain))
 
-    def evaluate(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson"):
-        """Films [m] from the numerical solution, with the solution and its convergence record."""
+    def evaluate(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson",
+                 initial=None):
+        """Films [m] from the numerical solution, with the solution and its convergence record.
+
+        ``initial`` (a previous :class:`~camcontact.ehl.line_solution.LineEHLSolution`, e.g. of the
+        neighbouring cam angle) warm-starts the solver instead of its full-multigrid start.
+        """
         from ..ehl.line_multigrid import solve_multigrid
 
         problem = self.problem(R, w, E_reduced, u_m, eta0, alpha, lubricant_state, density_law)
-        solution = solve_multigrid(problem, self.levels, tolerance=self.tolerance, strict=self.strict)
+        if initial is not None and tuple(initial.problem.domain) != tuple(problem.domain):
+            initial = None  # a warm start must live on the same grid
+        solution = solve_multigrid(problem, self.levels, tolerance=self.tolerance, strict=self.strict,
+                                   initial=initial)
         values = solution.dimensional(R, w, E_reduced)
         return {"h_c": values["h_c"], "h_min": values["h_min"], "ehl_solution": solution,
                 "convergence": solution.record, "M": problem.M, "L": problem.L}

@@ -180,8 +180,11 @@ def _subsurface(s):
     }
 
 
-def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo: bool) -> list[Step]:
-    lubricant = contact.lubricant  # None: the film steps exist, their missing input is reported
+def lubricant_step(lubricant, effects: frozenset, piezo: bool) -> Step:
+    """The step that evaluates the lubricant's state at the scene temperature (shared by the scenes).
+
+    ``lubricant`` may be None: the step then exists and its missing input is reported up front.
+    """
     if lubricant is None:
         density_law, lubricant_requires = "incompressible", ("lubricant",)
     else:
@@ -203,6 +206,16 @@ def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo:
                 f"Lubricant {lubricant.name!r} has no pressure-viscosity data (alpha or roelands_z), which "
                 "the 'piezoviscosity' effect needs; give it or switch the effect off"
             )
+
+    return Step("lubricant", lubricant_requires,
+                ("lubricant_state", "eta0", "alpha", "roelands_z", "kinematic_viscosity", "thermoviscous_coefficient",
+                 "lubricant_conductivity", "density_law"),
+                run_lubricant, check=check_piezo,
+                model="" if lubricant is None else f"{lubricant.viscosity_temperature_law}/{lubricant.viscosity_pressure_law}")
+
+
+def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo: bool) -> list[Step]:
+    lubricant = contact.lubricant
 
     def run_groups(s):
         alpha = s["alpha"] if piezo else 0.0
@@ -259,13 +272,9 @@ def _film_steps(contact: LineContact, film_spec: Any, effects: frozenset, piezo:
 
     model_name = getattr(model, "name", "film")
     steps = [
-        Step("lubricant", lubricant_requires,
-             ("lubricant_state", "eta0", "alpha", "roelands_z", "kinematic_viscosity", "thermoviscous_coefficient",
-              "lubricant_conductivity", "density_law"),
-             run_lubricant,
-             model="" if lubricant is None else f"{lubricant.viscosity_temperature_law}/{lubricant.viscosity_pressure_law}"),
+        lubricant_step(lubricant, effects, piezo),
         Step("ehl_groups", ("w", "R", "E_reduced", "u_m", "eta0", "alpha"),
-             ("alpha_effective", "U", "G", "W", "M", "L"), run_groups, check=check_piezo),
+             ("alpha_effective", "U", "G", "W", "M", "L"), run_groups),
         Step("film", (*LINE_INPUTS[:4], "eta0", "alpha_effective", "U", "G", "W", "M", "L",
                       *(("lubricant_state", "density_law") if "lubricant_state" in model.requires else ())),
              (*(f"{q}_isothermal" for q in films), "film_validity"), run_film,

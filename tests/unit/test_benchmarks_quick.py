@@ -42,3 +42,10 @@ def test_accuracy_vs_time_quick(tmp_path):
 def test_ehl_speed_quick(tmp_path):
     frame = _load("ehl_speed").main(["--quick", "--out", str(tmp_path)])
     assert list(frame["nodes"]) == [225, 449, 897] and frame["converged"].all()
+
+
+def test_cam_cycle_quick(tmp_path):
+    frame = _load("cam_cycle").main(["--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "cam_cycle.csv").exists()
+    assert set(frame["convention"]) == {"thesis", "consistent"} and (frame["angles"] == 24).all()
+    assert (frame["h_min over the cycle [um]"] > 0).all()

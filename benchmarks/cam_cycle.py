@@ -1,0 +1,93 @@
+"""Cost of a cam cycle: the LS-1 roller follower over a full turn, film by formula or by multigrid.
+
+Target (issue 4, 2-core machine, single thread): a full cycle, 360 angles at 1°, multigrid level 8,
+roller follower, in under 10 s. The dwell (180–360°) has constant conditions and is solved once
+(the film step caches identical inputs); the lift angles are warm-started from their neighbour.
+
+    python benchmarks/cam_cycle.py            # 1° steps, level 8, both speed conventions, median of 3
+    python benchmarks/cam_cycle.py --quick    # 15° steps, level 6, one run (the tests run this)
+
+Prints and writes ``cam_cycle.csv`` into ``--out``: per film model and convention the median wall
+time of the film step and of the whole analysis, the number of angles that needed the robust
+retry or a formula fallback, and the smallest film over the cycle.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+import camcontact as cc
+from camcontact.kinematics.motion_program import MotionProgram
+
+TARGET_SECONDS = 10.0
+
+
+def ls1_scene(step_deg: float, convention: str) -> cc.CamFollower:
+    steel = cc.Material(E="210 GPa", nu=0.3)
+    oil = cc.Lubricant(name="Tsuha 2015", alpha="2.2e-8 1/Pa", roelands_z=0.68, viscosity_pressure_law="roelands")
+    return cc.CamFollower(
+        cam=cc.Cam(program=MotionProgram.thesis_ls1(), base_radius="40 mm", width="15 mm", material=steel),
+        follower=cc.Follower.roller(radius="10 mm", offset="5 mm", material=steel),
+        valve_train=cc.ValveTrain.ls1(), speed="1000 rpm", angle_step=f"{step_deg} deg", lubricant=oil,
+        convention=convention,
+    )
+
+
+def main(argv: list[str] | None = None) -> pd.DataFrame:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--out", default=str(Path(__file__).parent / "results"))
+    args = parser.parse_args(argv)
+    os.environ.setdefault("NUMBA_NUM_THREADS", "1")
+    step, level, repeats = (15.0, 6, 1) if args.quick else (1.0, 8, 3)
+    models = {"pan_hamrock": "pan_hamrock", f"multigrid level {level}": cc.registry.get("film_models", "multigrid",
+                                                                                       levels=level)}
+    from camcontact.ehl.line_multigrid import solve_multigrid
+    from camcontact.ehl.line_problem import LineEHLProblem
+
+    solve_multigrid(LineEHLProblem(M=20, L=10), 5)  # compile / load the kernels first
+    rows = []
+    for convention in ("thesis", "consistent"):
+        scene = ls1_scene(step, convention)
+        for label, model in models.items():
+            totals, films, result = [], [], None
+            for _ in range(repeats):
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    start = time.perf_counter()
+                    result = cc.Analysis(scene, outputs=["h_min", "film_regime", "h_min_cycle"],
+                                         models={"film": model}).run()
+                    totals.append(time.perf_counter() - start)
+                films.append(sum(r.wall_time for r in result.records if r.step == "film"))
+            regimes = pd.Series(np.asarray(result["film_regime"], dtype=str))
+            rows.append({
+                "convention": convention, "film": label, "angles": len(regimes),
+                "median film time [s]": statistics.median(films), "median total time [s]": statistics.median(totals),
+                "angles not 'ok'": int((regimes != "ok").sum()),
+                "formula fallbacks": int(regimes.str.contains("formula").sum()),
+                "h_min over the cycle [um]": 1e6 * result["h_min_cycle"],
+            })
+            print(f"{convention:>10}  {label:<18} {rows[-1]['median total time [s]']:8.2f} s", flush=True)
+    frame = pd.DataFrame(rows)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    frame.to_csv(out / "cam_cycle.csv", index=False)
+    print(frame.to_string(index=False, float_format=lambda v: f"{v:.4g}"))
+    if not args.quick:
+        for _, row in frame[frame["film"].str.startswith("multigrid")].iterrows():
+            verdict = "met" if row["median total time [s]"] < TARGET_SECONDS else "NOT met"
+            print(f"{row['convention']}: full cycle at level {level} in {row['median total time [s]']:.1f} s "
+                  f"(target < {TARGET_SECONDS:g} s): {verdict}")
+    return frame
+
+
+if __name__ == "__main__":
+    main()

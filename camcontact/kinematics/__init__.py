@@ -1,0 +1,1 @@
+"""Cam kinematics: motion programs composed of motion-law segments, and follower kinematics."""

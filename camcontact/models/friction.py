@@ -1,0 +1,189 @@
+"""Friction models of a sliding contact (family ``friction_models``).
+
+=================== ============================================== =====================================
+name                formula                                        requires
+=================== ============================================== =====================================
+coulomb             F = mu N, P = F |u_s|                           normal_force, sliding_speed
+ferrarese_uehara    F = A_L eta0 V / h (Newtonian shear of the      normal_force, R, E_reduced, eta0,
+                    EHL film; Ferrarese & Uehara Eqs. 1-9, 11)      angular_speed
+=================== ============================================== =====================================
+
+All inputs are SI floats or arrays (e.g. over cam angles; they broadcast). Forces and powers
+are magnitudes (speed signs are ignored). A normal force of 0 means the contact is open (a
+valve-train jump) and gives zero friction force, coefficient and power, without warnings.
+"""
+
+from __future__ import annotations
+
+import attrs
+import numpy as np
+
+from ..errors import InputError
+from ..registry import builtin
+from ..units import in_range, number_field
+from .base import FrictionModel
+from .ferrarese_uehara_contact import (
+    K_AT_PAPER,
+    RPM_PER_RAD_PER_S,
+    constant_field,
+    derived_friction_constant,
+    hertz_contact_area,
+    hutchings_film_thickness,
+    k_L_field,
+    speed_inputs,
+)
+
+__all__ = ["Coulomb", "FerrareseUeharaFriction"]
+
+
+def _output(value):
+    value = np.asarray(value, dtype=float)
+    return float(value) if value.ndim == 0 else value
+
+
+@builtin
+@attrs.frozen
+class Coulomb(FrictionModel):
+    """Coulomb (dry, constant-coefficient) friction.
+
+    .. math:: F = \\mu N, \\qquad P = F\\,|u_s|
+
+    Parameters
+    ----------
+    coefficient : float
+        Friction coefficient mu [-], 0 <= mu <= 2 (above 1 only for clean, unlubricated metals).
+
+    Inputs (``requires``): ``normal_force`` N [N] (>= 0; 0 = contact open) and
+    ``sliding_speed`` u_s [m/s] (any sign). Returns ``friction_force`` [N],
+    ``friction_coefficient`` [-] (mu, 0 where N = 0) and ``friction_power`` [W].
+
+    References
+    ----------
+    Coulomb, C.A. (1785) Théorie des machines simples, Mém. Math. Phys. Acad. Sci. 10:161–332;
+    the comparison model of Ferrarese & Uehara (after Uehara & Padovese 1999).
+    """
+
+    name = "coulomb"
+    reference = "Coulomb (1785); comparison model of Ferrarese & Uehara (Uehara & Padovese 1999)"
+    requires = ("normal_force", "sliding_speed")
+    provides = ("friction_force", "friction_coefficient", "friction_power")
+
+    coefficient: float = number_field(validators=[in_range(0.0, 2.0)],
+                                      doc="friction coefficient mu [-]")
+
+    def evaluate(self, normal_force, sliding_speed):
+        """Friction force [N], coefficient [-] and power [W] for N [N], u_s [m/s]."""
+        N = np.asarray(normal_force, dtype=float)
+        u = np.asarray(sliding_speed, dtype=float)
+        if not (np.all(np.isfinite(N)) and np.all(np.isfinite(u))):
+            raise InputError("friction model 'coulomb': normal_force and sliding_speed must be finite (got NaN or inf)")
+        if np.any(N < 0.0):
+            raise InputError(f"friction model 'coulomb': normal_force = {N.min():.6g} N is negative; "
+                             "allowed: normal_force >= 0")
+        N, u = np.broadcast_arrays(N, u)
+        force = self.coefficient * N
+        return {
+            "friction_force": _output(force),
+            "friction_coefficient": _output(np.where(N > 0.0, self.coefficient, 0.0)),
+            "friction_power": _output(force * np.abs(u)),
+        }
+
+
+@builtin
+@attrs.frozen
+class FerrareseUeharaFriction(FrictionModel):
+    """Ferrarese & Uehara friction: Newtonian shear of the EHL film over the lubricated area.
+
+    .. math::
+        A_{HERTZ} &= \\pi\\left(\\frac{3 N R}{4 E}\\right)^{2/3}, \\qquad
+        A_L = k_L A_{HERTZ} \\qquad \\text{(Eqs. 1, 3)}\\\\
+        h &= 2.8\\,R^{0.77}\\mu^{0.65}V^{0.65}E^{-0.44}N^{-0.21}, \\qquad V = \\omega R
+        = \\tfrac{\\pi}{30} n R \\qquad \\text{(Eqs. 8, 12)}\\\\
+        F_{at} &= \\tau A_L = A_L\\,\\mu\\,\\frac{V}{h}, \\qquad P_{at} = F_{at} V
+        \\qquad \\text{(Eqs. 4–7, 11)}
+
+    Combined (Eq. 9, n in rpm):
+
+    .. math:: F_{at} = k_{at}\\,\\mu^{0.35} R^{0.247} E^{-0.227} N^{0.877} n^{0.35}
+
+    With ``constant="derived"`` (default) the force is computed from the component equations
+    above, which give the exponents of Eq. 9 exactly (0.35, 2/3 - 0.77 + 0.35 = 0.2467,
+    -2/3 + 0.44 = -0.2267, 2/3 + 0.21 = 0.8767) and
+    k_at = pi (3/4)^(2/3) (pi/30)^0.35 / 2.8 k_L = 0.4204 k_L. With ``constant="paper"`` it is
+    Eq. 9 as printed, exponents rounded as printed and k_at = 9.699e-2 k_L. The printed
+    constant disagrees with the paper's own Eqs. 1-8 by a factor 4.335 (it equals
+    pi^2 (3/4)^(2/3)/(30 x 2.8) k_L, i.e. Eq. 8 evaluated with n R in place of V); use it only
+    to reproduce the paper's numbers.
+
+    Here mu is the lubricant's dynamic viscosity ``eta0`` [Pa*s] (the paper's symbol), E the
+    paper's modulus of Eq. 2, E = [(1-nu1^2)/E1 + (1-nu2^2)/E2]^-1 = E'/2: the model takes
+    camcontact's ``E_reduced`` = E' and halves it. Eq. 1 is the circular Hertz area of a
+    sphere of radius R on a flat, which the paper applies to the cam.
+
+    Parameters
+    ----------
+    k_L : float
+        Lubricated-area factor A_L/A_HERTZ [-], 1 <= k_L <= 3 (EHL regime, Eq. 3); required.
+    constant : {"derived", "paper"}
+        Source of k_at (see above); default ``"derived"``.
+
+    Inputs (``requires``): ``normal_force`` N [N] (>= 0), ``R`` cam radius of curvature at the
+    contact [m] (> 0), ``E_reduced`` E' [Pa], ``eta0`` lubricant viscosity [Pa*s],
+    ``angular_speed`` omega of the cam [rad/s] (sign ignored). Returns ``friction_force``
+    F_at [N], ``friction_coefficient`` F_at/N [-], ``friction_power`` F_at V [W],
+    ``contact_area`` A_L [m^2] (the lubricated area, Eqs. 1 and 3, in both modes) and
+    ``film_thickness_hutchings`` h [m] (Eq. 8).
+
+    N = 0 (contact open) gives zero force, coefficient, power and area and h = inf, without
+    warnings; note that F_at/N ~ N^-0.123 grows without bound as N -> 0+, so the reported
+    coefficient at very small loads is large and at N = 0 is set to 0 (no contact).
+    omega = 0 gives zero friction (F_at ~ n^0.35).
+
+    References
+    ----------
+    Ferrarese, A. & Uehara, S.H. Friction and wear models in the cam-follower system, Escola
+    Politecnica da USP, Eqs. 1-9, 11, 12.
+    Hutchings, I.M. (1992) Tribology: Friction and Wear of Engineering Materials, Edward
+    Arnold (Eqs. 1 and 8 of the paper).
+    """
+
+    name = "ferrarese_uehara"
+    reference = ("Ferrarese & Uehara, Friction and wear models in the cam-follower system (EPUSP), "
+                 "Eqs. 1-9, 11, 12; Hutchings (1992) Tribology (Eqs. 1, 8)")
+    requires = ("normal_force", "R", "E_reduced", "eta0", "angular_speed")
+    provides = ("friction_force", "friction_coefficient", "friction_power", "contact_area",
+                "film_thickness_hutchings")
+    #: the paper's simulations reach 3000 rpm (= 314.2 rad/s)
+    validity = {"angular_speed": (0.0, 3000.0 / RPM_PER_RAD_PER_S)}
+
+    k_L: float = k_L_field()
+    constant: str = constant_field()
+
+    @property
+    def k_at(self) -> float:
+        """k_at of Eq. 9 [SI, n in rpm, E = E'/2] in the selected ``constant`` mode."""
+        return K_AT_PAPER * self.k_L if self.constant == "paper" else derived_friction_constant(self.k_L)
+
+    def evaluate(self, normal_force, R, E_reduced, eta0, angular_speed):
+        """See the class docstring (SI inputs, outputs in N, -, W, m^2, m)."""
+        arrays, V = speed_inputs(f"friction model {self.name!r}", normal_force, R, E_reduced, angular_speed, eta0=eta0)
+        N, R, E_red, eta = (arrays[k] for k in ("normal_force", "R", "E_reduced", "eta0"))
+        area = self.k_L * np.asarray(hertz_contact_area(N, R, E_red))
+        h = np.asarray(hutchings_film_thickness(R, eta, V, E_red, N))
+        loaded = N > 0.0
+        sheared = loaded & (V > 0.0)
+        if self.constant == "paper":
+            n = V / R * RPM_PER_RAD_PER_S  # |omega| in rpm
+            force = (self.k_at * eta**0.35 * R**0.247 * arrays["E"] ** -0.227
+                     * N**0.877 * n**0.35)
+        else:
+            force = np.where(sheared, area * eta * V / np.where(sheared, h, 1.0), 0.0)
+        coefficient = np.where(loaded, force / np.where(loaded, N, 1.0), 0.0)
+        return {
+            "friction_force": _output(force),
+            "friction_coefficient": _output(coefficient),
+            "friction_power": _output(force * V),
+            "contact_area": _output(area),
+            "film_thickness_hutchings": _output(h),
+        }
+

@@ -1,0 +1,92 @@
+"""Hard cam-cycle cases: the flat-faced follower's entrainment reversal at the nose (u_m = 0,
+Tsuha 2015 §6.2.1, reference §5 item 12) and a speed at which the follower jumps (§6.1)."""
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import camcontact as cc
+from camcontact.kinematics.follower import sign_changes
+from camcontact.kinematics.motion_program import MotionProgram
+
+STEEL = cc.Material(E="210 GPa", nu=0.3)
+OIL = cc.Lubricant(name="Tsuha 2015", alpha="2.2e-8 1/Pa", roelands_z=0.68, viscosity_pressure_law="roelands")
+
+
+def flat_scene(angles, **changes):
+    arguments = dict(
+        cam=cc.Cam(program=MotionProgram.thesis_ls1(), base_radius="49.7494 mm", width="15 mm", material=STEEL),
+        follower=cc.Follower.flat(material=STEEL), valve_train=cc.ValveTrain.ls1(), speed="1000 rpm",
+        angles=cc.Q_(np.asarray(angles, dtype=float), "deg"), lubricant=OIL,
+    )
+    arguments.update(changes)
+    return cc.CamFollower(**arguments)
+
+
+def _reversal_angles():
+    fine = np.arange(0.0, 180.0, 0.001)
+    u_m = cc.Analysis(flat_scene(fine), outputs=["u_m"]).run()["u_m"]
+    return np.degrees(sign_changes(np.radians(fine), u_m))
+
+
+@pytest.mark.parametrize("film", ["pan_hamrock", "dowson_higginson", "multigrid"])
+def test_flat_follower_through_zero_entrainment_never_returns_nan(film):
+    """1° steps over the nose plus the two reversal angles themselves (u_m within ~1e-6 m/s of zero):
+    finite films everywhere, no exception, and the near-zero angles flagged in film_regime."""
+    reversal = _reversal_angles()
+    angles = np.sort(np.concatenate([np.arange(55.0, 126.0, 1.0), reversal]))
+    model = cc.registry.get("film_models", "multigrid", levels=6) if film == "multigrid" else film
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = cc.Analysis(flat_scene(angles), outputs=["u_m", "M", "h_min", "film_regime"],
+                             models={"film": model}).run()
+    h = result["h_min"]
+    assert np.all(np.isfinite(h)) and np.all(h >= 0.0)
+    flagged = [i for i, text in enumerate(result["film_regime"]) if "u_m" in text]
+    near = [int(np.argmin(np.abs(angles - r))) for r in reversal]
+    assert set(near) <= set(flagged)
+    assert all("squeeze" in result["film_regime"][i] for i in near)
+    # away from the reversal the steady film is an ordinary EHL film
+    assert result["film_regime"][int(np.argmin(np.abs(angles - 90.0)))] in ("ok",) or film != "multigrid"
+    assert h[int(np.argmin(np.abs(angles - 90.0)))] > 0.05e-6
+
+
+def test_exactly_zero_entrainment_is_flagged_not_nan():
+    """An angle where u_m is exactly zero cannot be hit by sampling; a motion whose u_m vanishes on a whole
+    interval (f'' = -(R_o + f)/2 is impossible for a real program), so the check goes through the film step
+    directly with u_m = 0 on one angle."""
+    from camcontact.scenes.cam_follower import _cycle_films
+
+    model = cc.registry.get("film_models", "pan_hamrock")
+    state = OIL.state(None)
+    s = {"contact_open": np.array([False, False]), "w": np.array([1e5, 1e5]), "R": np.array([0.02, 0.02]),
+         "E_reduced": 2.3077e11, "u_m": np.array([0.0, 1.0]), "eta0": state.eta0, "alpha_effective": state.alpha,
+         "lubricant_state": state, "density_law": "dowson_higginson", "M": np.array([math.inf, 10.0]),
+         "U": np.array([0.0, 1e-11]), "G": np.array([5000.0, 5000.0]), "W": np.array([2e-5, 2e-5]),
+         "L": np.array([0.0, 10.0])}
+    films = _cycle_films(model, s, np.array([0.0, 1.0]))
+    assert films["h_min"][0] == 0.0 and np.isfinite(films["h_min"][1]) and films["h_min"][1] > 0
+    assert "u_m = 0" in films["film_regime"][0]
+
+
+def test_high_speed_jump_is_detected_and_reported():
+    """At 4000 rpm with a weak spring the inertia force exceeds spring + preload near the nose: the
+    prescribed-motion force goes negative, the scene says JUMP with the first angle, the contact is open
+    there (zero normal force, no Hertz), and k_min says which stiffness would have prevented it."""
+    weak = cc.ValveTrain(mass="0.662 kg", stiffness="2e4 N/m", preload="300 N", damping_ratio=0.06)
+    angles = np.arange(0.0, 360.0, 1.0)
+    result = cc.Analysis(flat_scene(angles, valve_train=weak, speed="4000 rpm"),
+                         outputs=["contact_force", "normal_force", "p_h", "h_min", "film_regime", "jump",
+                                  "k_min"]).run()
+    assert result["jump"].startswith("JUMP")
+    open_ = result["contact_force"] < 0
+    assert open_.any() and np.all(result["normal_force"][open_] == 0.0) and np.all(result["p_h"][open_] == 0.0)
+    assert all(text.startswith("contact lost") for text in np.asarray(result["film_regime"])[open_])
+    assert np.all(np.isfinite(result["h_min"][~open_]))
+    assert result["k_min"] > 2e4
+    safe = cc.ValveTrain(mass="0.662 kg", stiffness=f"{1.01 * result['k_min']!r} N/m", preload="300 N",
+                         damping_ratio=0.06)
+    again = cc.Analysis(flat_scene(angles, valve_train=safe, speed="4000 rpm"), outputs=["jump"]).run()
+    assert again["jump"].startswith("no jump")
