@@ -32,13 +32,33 @@ its seat and every stem element is unstrained (zero lash)::
 
 with K, C the stem chain plus k_r on mass 1 and k_p on mass n while x_n > 0. Gravity is left out.
 
-The contact and seat forces follow the Kelvin–Voigt law but never pull: a contact is *closed*
-while both its penetration and its force are positive, i.e. while
-h = min(k δ, k δ + c δ̇) > 0. The same continuous h serves as the event function for opening
-(h falls through 0) and closing (h rises through 0); a hysteresis of 1e-9 F_r0 keeps a restart
-from re-triggering the event it starts on. The pressure spring switches on and off at x_n = 0
-(continuous force, a kink), also as an event so every integration segment is a smooth linear ODE
-with a constant Jacobian.
+Readings of the paper (assumptions, since Fig. 1 is missing):
+
+* a chain: cam → m_1 → stem springs → m_n; the 5-DOF stem springs k_1 … k_4 join m_1–m_2, …,
+  m_4–m_5 in the printed order;
+* masses: m_1 is the tappet (bucket 48.0 g + shim 23.1 g) plus the top stem segment, the middle
+  masses are stem segments, m_n the valve head with the lowest stem segment; the 2-DOF m_1 is
+  the 5-DOF m_1 … m_4 together (bookkeeping and the 0.9 g shortfall against Table 1 in
+  :meth:`LumpedValveTrain.ferrarese_2dof`);
+* the return spring acts on m_1 (its retainer sits at the stem top, lumped with the tappet);
+  the pressure spring and the seat act on m_n;
+* zero valve lash: on the base circle the preload is shared by the cam contact and the seat;
+* the 5-DOF model uses the contact and seat elements printed in the 2-DOF column; the 2-DOF
+  stem stiffness (not printed) is the series combination of the 5-DOF stem;
+* the return-spring preload (not printed) is a field, default 250 N; the stem damping (not
+  printed) defaults to 2 % of critical per stem element.
+
+The contact and seat forces follow the Kelvin–Voigt law but never pull: a force element is
+*loaded* while both its penetration and its force are positive, i.e. while
+h = min(k δ, k δ + c δ̇) > 0. The same continuous h serves as the event function for unloading
+(h falls through 0) and loading (h rises through 0); a hysteresis ε = 1e-9 max(F_r0, 1 N) keeps
+a restart from re-triggering the event it starts on. A heavily damped element can unload while
+its penetration is still positive (the bodies move apart faster than k δ/c): the force is then
+zero although there is no gap yet. The reports keep the two apart: ``contact_open`` and
+``jumps`` are the geometric separations (gap x_1 − y > 0, located by their own events), the
+force is ``contact_force`` (zero whenever unloaded), and ``events`` lists both. The valve's
+passing x_n = 0 ("valve open": pressure spring on, valve off its seat) is a third switch, so
+every integration segment is a smooth linear ODE with a constant Jacobian.
 
 References
 ----------
@@ -63,13 +83,14 @@ __all__ = ["LumpedValveTrain", "SolverRecord", "StaticEquilibrium", "ValveTrainR
 
 TWO_PI = 2.0 * math.pi
 METHODS = ("auto", "LSODA", "Radau", "BDF")
-AUTO_STIFFNESS_LIMIT = 30.0  # ω_max Δt above which "auto" picks Radau over LSODA
-SWITCHES = ("contact", "seat", "pressure")
+AUTO_STIFFNESS_LIMIT = 16.0  # ω_max Δt above which "auto" picks Radau over LSODA
+SWITCHES = ("contact", "seat", "valve open")
+ZENO_RUN = 50  # consecutive switches closer than min_event_interval that count as chattering
 TABLE_REFINEMENT = 16  # lift-table nodes per output sample
 _trapezoid = getattr(np, "trapezoid", None) or np.trapz  # numpy >= 2.0 / 1.26
 
 # Ferrarese & Uehara Table 1 (global data) [kg, N/m]
-_VALVE_MASS, _SHIM_MASS, _BUCKET_MASS = 65.7e-3, 23.1e-3, 48.0e-3
+TABLE1_MASSES = {"valve": 65.7e-3, "shim": 23.1e-3, "bucket": 48.0e-3}  # [kg]; Table 2 lumps 0.9 g less
 _RETURN_SPRING, _PRESSURE_SPRING = 3.34e3, 13.35e3
 # Table 2 (printed in kN/m; converted here): k_c = 1.05e3 kN/m, k_v = 1.31e4 kN/m, k1 = 1.25e5 kN/m, k2..k4 = 5.03e5 kN/m
 _CONTACT_STIFFNESS, _CONTACT_DAMPING = 1.05e6, 635.0
@@ -218,8 +239,8 @@ class LumpedValveTrain:
     def ferrarese_2dof(cls, return_spring_preload: float = DEFAULT_PRELOAD, **overrides) -> LumpedValveTrain:
         """The 2-DOF model of Ferrarese & Uehara, Table 2 (with Table 1's springs).
 
-        m_1 = 105.5 g (bucket 48.0 + shim 23.1 + upper 4/5 of the valve stem 34.4 g), m_2 = 30.4 g
-        (valve head with the lowest stem segment). k_c = 1.05e3 kN/m = 1.05e6 N/m, c_c = 635 N s/m,
+        m_1 = 105.5 g (bucket 48.0 + shim 23.1 + four stem segments of 8.6 g), m_2 = 30.4 g
+        (valve head with the lowest part of the stem). k_c = 1.05e3 kN/m = 1.05e6 N/m, c_c = 635 N s/m,
         k_v = 1.31e4 kN/m = 1.31e7 N/m, c_v = 963 N s/m (the table prints stiffnesses in kN/m),
         k_r = 3.34e3 N/m, k_p = 13.35e3 N/m (Table 1).
 
@@ -453,7 +474,8 @@ class ValveTrainResponse:
 
     Arrays are sampled on a uniform cam-angle grid plus the instants of the contact events
     (at an event the arrays hold the values just after the switch). 2-D arrays are
-    (time, mass), mass 1 (cam side) first.
+    (time, mass), mass 1 (cam side) first. "Open"/"seated" are geometric, the forces are the
+    Kelvin–Voigt forces (which can vanish before a gap opens; see the module notes).
 
     Attributes
     ----------
@@ -473,21 +495,23 @@ class ValveTrainResponse:
     contact_force : ndarray
         N [N] between cam and mass 1 (>= 0).
     seat_force : ndarray
-        Seat force on the valve head [N] (>= 0).
+        Seat force on the valve head [N] (>= 0); zero whenever the valve is off its seat.
     contact_open : ndarray of bool
-        Follower off the cam.
+        Follower off the cam: gap x_1 − y >= 0 with the contact unloaded.
     seated : ndarray of bool
-        Valve on its seat (seat element active).
+        Valve on its seat, x_n <= 0 (to within the switch hysteresis, ~1e-14 m).
     jumps : pandas.DataFrame
-        One row per separation of follower and cam: "cycle", "start angle [deg]",
+        One row per separation of follower and cam (a gap opens): "cycle", "start angle [deg]",
         "end angle [deg]" (unwrapped), "duration [s]", "max gap [m]", "complete" (False when
-        the run ended with the contact still open; the end is then the last instant).
+        the run ended with the gap still open; the end is then the last instant).
     seat_bounces : pandas.DataFrame
         One row per lift-off of the valve from its seat that the cam did not drive (the valve
         leaves the seat while the cam lift is not rising, ẏ <= 0: a rebound at closing or a
         jump-driven opening); columns as ``jumps`` with "max lift [m]".
     events : pandas.DataFrame
-        Every switch: "time [s]", "angle [deg]", "switch" (contact/seat/pressure), "active".
+        Every switch in time order: "time [s]", "angle [deg]", "switch", "active". Switches:
+        "contact" (cam force loaded/unloaded), "gap" (follower separates from / lands on the
+        cam), "seat" (seat force loaded/unloaded), "valve open" (x_n > 0 / back on the seat).
     record : SolverRecord
     """
 
@@ -649,7 +673,6 @@ class _HermiteLift:
         self.h = TWO_PI / points
         phi = np.arange(points + 1) * self.h
         y, d1, d2 = _evaluate_lift(fn, np.mod(theta0 + phi, TWO_PI))
-        y[-1], d1[-1], d2[-1] = y[0], d1[0], d2[0]  # one revolution: periodic
         h = self.h
         p0, p1 = y[:-1], y[1:]
         v0, v1 = h * d1[:-1], h * d1[1:]
@@ -681,7 +704,8 @@ class _HermiteLift:
 
 
 def _positive_int(value, name: str, minimum: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer, float)) or float(value) != int(value):
+    if (isinstance(value, bool) or not isinstance(value, (int, np.integer, float)) or not math.isfinite(value)
+            or float(value) != int(value)):
         raise InputError(f"simulate: {name} = {value!r}: expected an integer >= {minimum}")
     if int(value) < minimum:
         raise InputError(f"simulate: {name} = {value!r}: allowed {name} >= {minimum}")
@@ -724,7 +748,7 @@ def simulate(
         the current contact state. The stem modes make the system stiff; LSODA (which starts
         non-stiff and switches itself) is fastest while the highest natural frequency is
         moderate, Radau (L-stable) when it is far above the output rate. ``"auto"`` picks LSODA
-        if ω_max Δt < 30 (ω_max the highest natural frequency [rad/s], seated or open, Δt the
+        if ω_max Δt < 16 (ω_max the highest natural frequency [rad/s], seated or open, Δt the
         output interval), else Radau. Measured with the Ferrarese sets over 2 cycles: 2-DOF
         (ω_max Δt = 1.6 at 3000 rpm, 9.7 at 500 rpm) LSODA 0.3–1.0 s vs Radau 1.1–2.4 s; 5-DOF
         (12 and 73) LSODA 2.3 s and 7.9 s vs Radau 3.5 s and 2.1 s. BDF is slow on the lightly
@@ -737,10 +761,10 @@ def simulate(
     start_angle : float
         θ_0 [rad] at t = 0; it should lie on the base circle (dwell).
     max_events : int, optional
-        Most contact/seat/pressure switches allowed (default 500 per cycle) before
+        Most switches (see ``ValveTrainResponse.events``) allowed (default 500 per cycle) before
         :class:`~camcontact.errors.ConvergenceError` (chattering).
     min_event_interval : float
-        [s] More than 50 consecutive events each closer than this to the previous one are taken
+        [s] More than ``ZENO_RUN`` = 50 consecutive switches each closer than this to the previous one are taken
         as Zeno chattering: ConvergenceError.
 
     Returns
@@ -759,9 +783,13 @@ def simulate(
     The run starts from the static equilibrium at y(θ_0) (on the base circle: valve seated,
     the preload shared between the cam contact and the stem–seat chain), with every mass moving
     at the cam's velocity ω y'(θ_0) (zero on the base circle). Between events the system is linear,
-    ż = A z + b(t), with A constant; events end a segment where a contact opens or closes
-    (h = min(k δ, k δ + c δ̇) crosses ∓ε, ε = 1e-9 max(F_r0, 1 N)) or the valve passes x_n = 0
-    (pressure spring), and the next segment restarts from the event state with the new A.
+    ż = A z + b(t), with A constant; events end a segment where a force element loads or unloads
+    (h = min(k δ, k δ + c δ̇) crosses ±ε, ε = 1e-9 max(F_r0, 1 N)) or the valve passes x_n = 0,
+    and the next segment restarts from the event state with the new A. The opening and closing
+    of a geometric gap at the cam are located by non-terminal events (no restart). The lift is
+    tabulated once and interpolated by quintic Hermite polynomials inside the right-hand side
+    (``TABLE_REFINEMENT`` nodes per output sample); for the cycloidal test cam the interpolated
+    y is exact to 1e-16 m and ẏ to 1e-10 m/s.
     """
     if not isinstance(train, LumpedValveTrain):
         raise InputError(f"simulate: train = {train!r}: expected a LumpedValveTrain")
@@ -812,8 +840,8 @@ def simulate(
     kv, cv = train.seat_stiffness, train.seat_damping
     preload = train.return_spring_preload
     eps = 1e-9 * max(preload, 1.0)
-    # hysteresis per switch [N]; the pressure spring's is half the seat's so that "valve reaches
-    # x_n = 0" (pressure off) and "seat engages" never fall on the same instant
+    # hysteresis per switch [N]; the valve-open switch's is half the seat's so that "valve reaches
+    # x_n = 0" and "seat engages" never fall on the same instant
     hysteresis = (eps, eps, 0.5 * eps)
     use_pressure = train.pressure_spring_stiffness > 0.0
     inv_m = 1.0 / np.asarray(train.masses, dtype=float)
@@ -832,30 +860,28 @@ def simulate(
 
     lift_at = _HermiteLift(fn, theta0, omega, TABLE_REFINEMENT * points_per_cycle)
 
-    def switch_values(t, z):
-        """h of each switch (> 0: active): contact, seat, pressure [N]."""
+    def h_contact(t, z):
         y, dy = lift_at(t)
         d, dd = y - z[0], dy - z[n]
-        h_contact = min(kc * d, kc * d + cc * dd)
-        h_seat = min(-kv * z[n - 1], -kv * z[n - 1] - cv * z[2 * n - 1])
-        h_pressure = kv * z[n - 1]
-        return h_contact, h_seat, h_pressure
+        return min(kc * d, kc * d + cc * dd)
 
-    def make_event(index, active):
-        offset = hysteresis[index] if active else -hysteresis[index]
+    def h_seat(t, z):
+        return min(-kv * z[n - 1], -kv * z[n - 1] - cv * z[2 * n - 1])
+
+    def h_valve_open(t, z):
+        return kv * z[n - 1]
+
+    def h_gap(t, z):
+        return kc * (lift_at(t)[0] - z[0])
+
+    switch_functions = (h_contact, h_seat, h_valve_open)
+
+    def switch_values(t, z):
+        """h of each switch (> 0: active) [N]."""
+        return tuple(h(t, z) for h in switch_functions)
+
+    def make_event(h, offset, direction, terminal):
         memo: dict[float, float] = {}
-
-        if index == 0:
-            def h(t, z):
-                y, dy = lift_at(t)
-                d, dd = y - z[0], dy - z[n]
-                return min(kc * d, kc * d + cc * dd)
-        elif index == 1:
-            def h(t, z):
-                return min(-kv * z[n - 1], -kv * z[n - 1] - cv * z[2 * n - 1])
-        else:
-            def h(t, z):
-                return kv * z[n - 1]
 
         def event(t, z):
             # solve_ivp first calls an event at each step end with the solver's own state, and later
@@ -870,15 +896,15 @@ def simulate(
                 memo[t] = value
             return value
 
-        event.terminal = True
-        event.direction = -1.0 if active else 1.0
+        event.terminal = terminal
+        event.direction = direction
         return event
 
     # -- initial state: static equilibrium ----------------------------------------------------
     static = train.static_equilibrium(y_grid[0])
     z = np.concatenate([static.displacement, np.full(n, dy_grid[0] * omega)])
     modes = (True, static.seated, (not static.seated) and static.displacement[-1] > 0.0)
-    modes = _consistent_modes(modes, switch_values(0.0, z), hysteresis, use_pressure)
+    modes = _consistent_modes(modes, switch_values(0.0, z), hysteresis)
 
     times = [np.array([0.0])]
     states = [z[:, None]]
@@ -889,22 +915,24 @@ def simulate(
     nfev = 0
     close_run = 0
     tol_t = 1e-9 * dt_grid
+    b0 = np.zeros(2 * n)
+    b0[n] = -preload * inv_m[0]
 
     while True:
         A = system(modes)
-        b0 = np.zeros(2 * n)
-        b0[n] = -preload * inv_m[0]
         contact_on = modes[0]
 
-        def rhs(tt, zz, A=A, b0=b0, contact_on=contact_on):
+        def rhs(tt, zz, A=A, contact_on=contact_on):
             out = A @ zz + b0
             if contact_on:
                 y, dy = lift_at(tt)
                 out[n] += (kc * y + cc * dy) * inv_m[0]
             return out
 
-        events = [make_event(i, modes[i]) for i in range(3) if i < 2 or use_pressure]
-        event_index = [i for i in range(3) if i < 2 or use_pressure]
+        events = [make_event(switch_functions[i], hysteresis[i] if modes[i] else -hysteresis[i],
+                             -1.0 if modes[i] else 1.0, True) for i in range(3)]
+        if not contact_on:  # the geometric gap y − x_1 < 0 opens and closes only while N = 0
+            events.append(make_event(h_gap, 0.0, 0.0, False))
         t_eval = t_grid[t_grid > t + tol_t]
         segments += 1
         try:
@@ -919,15 +947,23 @@ def simulate(
                                    f"t = {t:.6g} s: {sol.message}")
         seg_t = np.asarray(sol.t, dtype=float)
         if seg_t.size:
-            seg_y = np.asarray(sol.y, dtype=float).reshape(2 * n, seg_t.size)
             times.append(seg_t)
-            states.append(seg_y)
+            states.append(np.asarray(sol.y, dtype=float).reshape(2 * n, seg_t.size))
             mode_rows.append(np.tile(np.array(modes), (seg_t.size, 1)))
+        if not contact_on:  # gap openings/closings: recorded as instants, no restart
+            for t_gap, z_gap in zip(np.atleast_1d(sol.t_events[3]), np.atleast_1d(sol.y_events[3])):
+                z_gap = np.asarray(z_gap, dtype=float)
+                opening = lift_at(float(t_gap))[1] - z_gap[n] < 0.0
+                event_rows.append((float(t_gap), "gap", bool(opening)))
+                if np.min(np.abs(t_grid - t_gap)) > tol_t:
+                    times.append(np.array([float(t_gap)]))
+                    states.append(z_gap[:, None])
+                    mode_rows.append(np.array([modes]))
         if sol.status == 0:
             break
 
         # a terminal event: find it, switch, restart
-        fired = [(te[-1], k) for k, te in enumerate(sol.t_events) if len(te)]
+        fired = [(te[-1], k) for k, te in enumerate(sol.t_events[:3]) if len(te)]
         t_event, k_first = max(fired)
         z_event = np.asarray(sol.y_events[k_first][-1], dtype=float)
         if not np.all(np.isfinite(z_event)):
@@ -935,17 +971,17 @@ def simulate(
         new = list(modes)
         for te, k in fired:
             if abs(te - t_event) <= tol_t:
-                new[event_index[k]] = not new[event_index[k]]
-        new_modes = _consistent_modes(tuple(new), switch_values(t_event, z_event), hysteresis, use_pressure)
+                new[k] = not new[k]
+        new_modes = _consistent_modes(tuple(new), switch_values(t_event, z_event), hysteresis)
         for i in range(3):
             if new_modes[i] != modes[i]:
                 event_rows.append((t_event, SWITCHES[i], new_modes[i]))
         close_run = close_run + 1 if t_event - t < min_event_interval else 0
-        if close_run > 50:
+        if close_run > ZENO_RUN:
             raise ConvergenceError(
                 f"simulate ({train.name}, ω = {omega:.6g} rad/s): contact chattering (Zeno) near "
-                f"θ = {math.degrees(theta0 + omega * t_event):.4f} deg: more than 50 consecutive switches "
-                f"within {min_event_interval:g} s of each other"
+                f"θ = {math.degrees(theta0 + omega * t_event):.4f} deg: more than {ZENO_RUN} consecutive "
+                f"switches within {min_event_interval:g} s of each other"
             )
         if len(event_rows) > max_events:
             raise ConvergenceError(
@@ -959,7 +995,7 @@ def simulate(
             states.append(z[:, None])
             mode_rows.append(np.array([modes]))
         if t_end - t <= tol_t:  # an event on the last instant: close the record at t_end
-            if times[-1][-1] < t_end:
+            if max(float(np.max(a)) for a in times) < t_end:
                 times.append(np.array([t_end]))
                 states.append(z[:, None])
                 mode_rows.append(np.array([modes]))
@@ -975,6 +1011,7 @@ def simulate(
         time_all, z_all, mode_all = time_all[keep], z_all[keep], mode_all[keep]
     if not np.all(np.isfinite(z_all)):
         raise ConvergenceError(f"simulate ({train.name}, ω = {omega:.6g} rad/s): the solution has non-finite values")
+    event_rows.sort(key=lambda row: row[0])
 
     # -- outputs ----------------------------------------------------------------------------------
     angle = theta0 + omega * time_all
@@ -990,21 +1027,34 @@ def simulate(
         y[~on_grid], dyt[~on_grid], ddyt[~on_grid] = ye, omega * dye, omega**2 * ddye
     x = z_all[:, :n]
     v = z_all[:, n:]
-    contact_on = mode_all[:, 0]
-    seated = mode_all[:, 1]
+    contact_on, seat_on, valve_open = mode_all[:, 0], mode_all[:, 1], mode_all[:, 2]
     N = np.where(contact_on, np.maximum(kc * (y - x[:, 0]) + cc * (dyt - v[:, 0]), 0.0), 0.0)
-    S = np.where(seated, np.maximum(-kv * x[:, -1] - cv * v[:, -1], 0.0), 0.0)
+    S = np.where(seat_on, np.maximum(-kv * x[:, -1] - cv * v[:, -1], 0.0), 0.0)
     for name, arr in (("contact force", N), ("seat force", S), ("lift", y)):
         if not np.all(np.isfinite(arr)):
             raise ConvergenceError(f"simulate ({train.name}): non-finite {name}")
+    contact_open = ~contact_on & (y - x[:, 0] <= 0.0)
 
-    jumps = _intervals(event_rows, "contact", time_all, angle, x[:, 0] - y, t_end, omega, theta0,
-                       "max gap [m]", lambda t0: True)
-    seat_bounces = _intervals(event_rows, "seat", time_all, angle, x[:, -1], t_end, omega, theta0,
-                              "max lift [m]", lambda t0: omega * _evaluate_lift(
-                                  fn, np.array([math.fmod(theta0 + omega * t0, TWO_PI) % TWO_PI]))[1][0] <= 0.0)
     import pandas as pd
 
+    gap_transitions = []
+    gap_open = False
+    for t_row, name, active in event_rows:
+        if name == "gap" and active != gap_open:
+            gap_transitions.append((t_row, active))
+            gap_open = active
+        elif name == "contact" and active and gap_open:  # the force closed: the gap has closed
+            gap_transitions.append((t_row, False))
+            gap_open = False
+    valve_transitions = [(t_row, active) for t_row, name, active in event_rows if name == "valve open"]
+    jumps = _intervals(gap_transitions, time_all, x[:, 0] - y, t_end, omega, theta0, "max gap [m]",
+                       lambda t0: True)
+
+    def not_cam_driven(t0):
+        return _evaluate_lift(fn, np.array([math.fmod(theta0 + omega * t0, TWO_PI) % TWO_PI]))[1][0] <= 0.0
+
+    seat_bounces = _intervals(valve_transitions, time_all, x[:, -1], t_end, omega, theta0, "max lift [m]",
+                              not_cam_driven)
     events_frame = pd.DataFrame({
         "time [s]": [r[0] for r in event_rows],
         "angle [deg]": [math.degrees(theta0 + omega * r[0]) for r in event_rows],
@@ -1016,18 +1066,15 @@ def simulate(
     return ValveTrainResponse(
         train=train, speed=omega, cycles=cycles, time=time_all, angle=angle, lift=y, lift_velocity=dyt,
         lift_acceleration=ddyt, displacement=x, velocity=v, contact_force=N, seat_force=S,
-        contact_open=~contact_on, seated=seated.copy(), jumps=jumps, seat_bounces=seat_bounces,
+        contact_open=contact_open, seated=~valve_open, jumps=jumps, seat_bounces=seat_bounces,
         events=events_frame, record=record,
     )
 
 
-def _consistent_modes(modes, h, hysteresis, use_pressure):
+def _consistent_modes(modes, h, hysteresis):
     """Switch states consistent with the h values (active needs h >= −ε_i, inactive h <= ε_i)."""
     new = list(modes)
     for i in range(3):
-        if i == 2 and not use_pressure:
-            new[i] = False  # no pressure spring: its state never matters
-            continue
         if new[i] and h[i] < -hysteresis[i]:
             new[i] = False
         elif not new[i] and h[i] > hysteresis[i]:
@@ -1035,18 +1082,16 @@ def _consistent_modes(modes, h, hysteresis, use_pressure):
     return tuple(bool(m) for m in new)
 
 
-def _intervals(event_rows, switch, time_all, angle, measure, t_end, omega, theta0, measure_name, accept):
-    """Inactive intervals of one switch (contact open / valve off its seat) as a DataFrame."""
+def _intervals(transitions, time_all, measure, t_end, omega, theta0, measure_name, accept):
+    """Intervals between (t, True) and the next (t, False) transition as a DataFrame."""
     import pandas as pd
 
     rows = []
     start = None
-    for t, name, active in event_rows:
-        if name != switch:
-            continue
-        if not active and start is None:
+    for t, active in transitions:
+        if active and start is None:
             start = t
-        elif active and start is not None:
+        elif not active and start is not None:
             rows.append((start, t, True))
             start = None
     if start is not None:

@@ -20,7 +20,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from camcontact.dynamics import LumpedValveTrain, ValveTrainResponse, simulate
+from camcontact.dynamics import LumpedValveTrain, ValveTrainResponse, simulate, valve_train_ode
 from camcontact.errors import InputError
 
 LIFT = 8e-3  # [m]
@@ -82,6 +82,11 @@ def test_ferrarese_parameter_sets_in_si(two_dof, five_dof):
         assert train.seat_stiffness == 1.31e7 and train.seat_damping == 963.0
         assert train.return_spring_stiffness == 3.34e3 and train.pressure_spring_stiffness == 13.35e3
         assert train.total_mass == pytest.approx(0.1359)
+    # Table 1 components: 136.8 g; both lumpings 135.9 g (the lumped valve is 64.8 g, not 65.7 g)
+    assert sum(valve_train_ode.TABLE1_MASSES.values()) == pytest.approx(0.1368)
+    assert sum(valve_train_ode.TABLE1_MASSES.values()) - five_dof.total_mass == pytest.approx(0.9e-3)
+    assert five_dof.masses[0] == pytest.approx(valve_train_ode.TABLE1_MASSES["bucket"]
+                                               + valve_train_ode.TABLE1_MASSES["shim"] + 8.6e-3)
     # 2-DOF m1 = 5-DOF m1 + m2 + m3 + m4; 2-DOF stem = series of the 5-DOF stem
     assert two_dof.masses[0] == pytest.approx(sum(five_dof.masses[:4]))
     assert two_dof.stem_stiffness[0] == pytest.approx(1.0 / (1 / 1.25e8 + 3 / 5.03e8))
@@ -182,33 +187,46 @@ def test_two_and_five_dof_agree_at_low_speed(two_dof, five_dof):
 def test_weak_spring_jumps_at_high_speed_strong_spring_does_not(factory):
     """3000 rpm: the follower side needs m ÿ ≈ 0.136 kg × 3324 m/s² ≈ 450 N of spring force at the peak
     deceleration (θ = 52.5°). With F_r0 = 100 N (+ ≈ 110 N from k_r, k_p at that lift) it cannot: the
-    follower leaves the cam during the rise's deceleration (θ between 35° and 70°). With F_r0 = 800 N and
-    k_r = 40 N/mm the margin is > 300 N: no jump."""
+    follower leaves the cam during the rise's deceleration (θ between 35° and 70°) and the gap opens by
+    millimetres. With F_r0 = 800 N the margin is > 300 N: no gap ever opens and the valve never bounces.
+
+    (With any preload the heavily damped contact, ζ ≈ 1, unloads for a few degrees just after the valve
+    seats at this speed, N = 0 without a gap: a "contact" event, not a jump. So the strong-spring check on
+    N > 0 covers the lift up to 115°, before seating.)"""
     weak = simulate(factory(return_spring_preload=100.0), cycloidal_lift, rpm(3000))
     assert weak.jumped and weak.contact_open.any()
     first = weak.jumps.iloc[0]
     assert 35.0 < first["start angle [deg]"] < 70.0
     assert first["end angle [deg]"] > first["start angle [deg]"] and first["duration [s]"] > 0
-    assert first["max gap [m]"] > 1e-5 and bool(first["complete"])
+    assert first["max gap [m]"] > 1e-4 and bool(first["complete"])
     assert set(weak.jumps["cycle"]) == {1, 2}
     assert np.all(weak.contact_force[weak.contact_open] == 0.0)
-    # the jump table agrees with the flag array
+    # the jump table agrees with the flag array and the gap
     start = math.radians(first["start angle [deg]"])
     end = math.radians(first["end angle [deg]"])
     inside = (weak.angle > start + 1e-9) & (weak.angle < end - 1e-9)
     assert weak.contact_open[inside].all()
+    gap = weak.displacement[:, 0] - weak.lift
+    assert np.max(gap[inside]) == pytest.approx(first["max gap [m]"])
+    assert np.all(gap[~weak.contact_open] < 1e-12)
+    events = weak.events
+    assert {"contact", "gap", "seat", "valve open"} <= set(events["switch"])
+    # the force unloads before the gap opens
+    unload = events[(events["switch"] == "contact") & ~events["active"]]["angle [deg]"].iloc[0]
+    assert unload <= first["start angle [deg]"]
     assert_all_finite(weak)
 
-    strong = simulate(factory(return_spring_preload=800.0, return_spring_stiffness=4e4), cycloidal_lift, rpm(3000))
+    strong = simulate(factory(return_spring_preload=800.0), cycloidal_lift, rpm(3000))
     assert not strong.jumped and not strong.contact_open.any()
-    assert strong.contact_force.min() > 50.0
     assert strong.seat_bounces.empty
+    lifting = (np.degrees(strong.angle) % 360.0 > 1.0) & (np.degrees(strong.angle) % 360.0 < 115.0)
+    assert strong.contact_force[lifting].min() > 50.0
     assert_all_finite(strong)
 
 
 def test_seat_force_only_while_seated(two_dof):
     r = simulate(two_dof, cycloidal_lift, rpm(2000))
-    lifted = r.displacement[:, -1] > 0.0
+    lifted = r.displacement[:, -1] > 1e-12  # the valve-open switch has a hysteresis of ~1e-14 m
     assert lifted.any() and (~lifted).any()
     assert np.all(r.seat_force[lifted] == 0.0)
     assert np.all(r.seat_force[~r.seated] == 0.0)
@@ -237,7 +255,8 @@ def test_response_tables_and_cycle_mean(two_dof):
     assert r.cycle_mean(r.contact_force) == pytest.approx(expected)
     assert r.cycle_mean("N", skip_cycles=1) == pytest.approx(expected, rel=1e-3)  # periodic: no start transient
     assert list(r.events.columns) == ["time [s]", "angle [deg]", "switch", "active"]
-    assert set(r.events["switch"]) == {"seat", "pressure"}
+    assert {"seat", "valve open"} <= set(r.events["switch"]) <= {"contact", "gap", "seat", "valve open"}
+    assert np.all(np.diff(r.events["time [s]"]) >= 0.0)
     assert list(r.jumps.columns) == ["cycle", "start angle [deg]", "end angle [deg]", "duration [s]",
                                      "max gap [m]", "complete"]
     assert isinstance(r.seat_bounces, pd.DataFrame) and "max lift [m]" in r.seat_bounces.columns
@@ -266,7 +285,9 @@ def test_motion_program_lift():
     train = LumpedValveTrain.ferrarese_2dof()
     from_program = simulate(train, program.evaluate, rpm(1500))
     inline = simulate(train, cycloidal_lift, rpm(1500))
-    np.testing.assert_allclose(from_program.lift, inline.lift, atol=1e-12)
+    theta = np.linspace(0.0, 2 * math.pi, 3601)
+    for mine, theirs in zip(cycloidal_lift(theta), program.evaluate(theta)[:3]):
+        np.testing.assert_allclose(theirs, mine, rtol=1e-9, atol=1e-15)
     assert from_program.cycle_mean("N") == pytest.approx(inline.cycle_mean("N"), rel=1e-6)
     assert simulate(train, program, rpm(1500)).cycle_mean("N") == pytest.approx(inline.cycle_mean("N"), rel=1e-6)
     assert_all_finite(from_program)
@@ -311,6 +332,7 @@ def test_bad_train_input(change, pattern):
         (dict(speed=math.inf), r"speed = inf"),
         (dict(cycles=0), r"cycles = 0: allowed cycles >= 1"),
         (dict(cycles=1.5), r"cycles = 1\.5: expected an integer"),
+        (dict(cycles=math.inf), r"cycles = inf: expected an integer"),
         (dict(points_per_cycle=4), r"points_per_cycle = 4"),
         (dict(method="RK45"), r"method = 'RK45'; allowed: auto, LSODA, Radau, BDF"),
         (dict(rtol=0.0), r"rtol"),
