@@ -94,8 +94,9 @@ def test_ferrarese_parameter_sets_in_si(two_dof, five_dof):
 
 
 def test_natural_frequencies_are_sane(two_dof, five_dof):
-    """First mode (follower on the cam, valve open) ≈ sqrt((k_c + k_r + k_p,eff)/Σm)/2π: the whole train on
-    the contact spring, 446 Hz for both models (the stem is stiff); stem modes far above."""
+    """First mode (follower on the cam, valve open) ≈ sqrt((k_c + k_r + k_p)/Σm)/2π: the whole train as one
+    rigid body on the contact, return and pressure springs, 446 Hz for both models (the stem is stiff, so k_p
+    in series with it is k_p); the stem modes lie far above."""
     rigid = math.sqrt((1.05e6 + 3.34e3 + 13.35e3) / 0.1359) / (2 * math.pi)
     f2, f5 = two_dof.natural_frequencies(), five_dof.natural_frequencies()
     assert f2[0] == pytest.approx(rigid, rel=5e-3) and f5[0] == pytest.approx(f2[0], rel=1e-3)
@@ -106,7 +107,8 @@ def test_natural_frequencies_are_sane(two_dof, five_dof):
 def test_static_equilibrium_on_base_circle_shares_the_preload(two_dof):
     """Base circle, zero lash: mass 1 rests on the contact (k_c) in parallel with the stem–seat chain
     k_chain = (1/k_s + 1/k_v)^-1 and the return spring, so x1 = −F_r0/(k_c + k_r + k_chain) and the cam
-    carries N0 = k_c |x1|; the seat carries the rest, F_r0 + k_r x1 − N0... i.e. k_chain |x1|."""
+    carries N0 = k_c |x1|; the seat carries k_chain |x1|, and N0 + seat = F_r0 + k_r x1 (force balance on
+    the whole train: the spring force at x1)."""
     F0 = two_dof.return_spring_preload
     k_chain = 1.0 / (1.0 / two_dof.stem_stiffness[0] + 1.0 / two_dof.seat_stiffness)
     x1 = -F0 / (1.05e6 + 3.34e3 + k_chain)
