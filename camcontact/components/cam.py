@@ -189,11 +189,10 @@ class ValveTrain(Component):
         Arguments are Quantities or strings (masses [kg], inertia [kg m²], stiffnesses [N/m],
         lever arms [m]: rocker pivot to push rod and to valve).
         """
-        from ..units import to_quantity
+        from ..units import si_value, to_quantity
 
         def si(value, dimension, field):
-            quantity = to_quantity(value, dimension, where=f"ValveTrain.from_pushrod_train {field}")
-            magnitude = float(quantity.to_base_units().magnitude)
+            magnitude = float(si_value(to_quantity(value, dimension, where=f"ValveTrain.from_pushrod_train {field}")))
             if magnitude <= 0.0:
                 raise InputError(f"ValveTrain.from_pushrod_train: {field} = {value} must be > 0")
             return magnitude

@@ -278,20 +278,8 @@ class LumpedValveTrain:
         about ten times softer than a production valve spring (F_r0/k_r = 75 mm would be its
         installed compression), which is why the preload is an independent field.
         """
-        fields = dict(
-            masses=_MASSES_2DOF,
-            stem_stiffness=(1.0 / sum(1.0 / k for k in _STEM_5DOF),),
-            contact_stiffness=_CONTACT_STIFFNESS,
-            contact_damping=_CONTACT_DAMPING,
-            seat_stiffness=_SEAT_STIFFNESS,
-            seat_damping=_SEAT_DAMPING,
-            return_spring_stiffness=_RETURN_SPRING,
-            return_spring_preload=return_spring_preload,
-            pressure_spring_stiffness=_PRESSURE_SPRING,
-            name="Ferrarese & Uehara 2-DOF",
-        )
-        fields.update(overrides)
-        return cls(**fields)
+        return cls._ferrarese(_MASSES_2DOF, (1.0 / sum(1.0 / k for k in _STEM_5DOF),), "Ferrarese & Uehara 2-DOF",
+                              return_spring_preload, overrides)
 
     @classmethod
     def ferrarese_5dof(cls, return_spring_preload: float = DEFAULT_PRELOAD, **overrides) -> LumpedValveTrain:
@@ -313,17 +301,16 @@ class LumpedValveTrain:
         the first as the 2-DOF model's. The stem modes make the ODE stiff (see :func:`simulate`,
         ``method="auto"``).
         """
+        return cls._ferrarese(_MASSES_5DOF, _STEM_5DOF, "Ferrarese & Uehara 5-DOF", return_spring_preload, overrides)
+
+    @classmethod
+    def _ferrarese(cls, masses, stem_stiffness, name, return_spring_preload, overrides) -> LumpedValveTrain:
+        """A model with the paper's contact, seat and spring elements (Tables 1 and 2), then ``overrides``."""
         fields = dict(
-            masses=_MASSES_5DOF,
-            stem_stiffness=_STEM_5DOF,
-            contact_stiffness=_CONTACT_STIFFNESS,
-            contact_damping=_CONTACT_DAMPING,
-            seat_stiffness=_SEAT_STIFFNESS,
-            seat_damping=_SEAT_DAMPING,
-            return_spring_stiffness=_RETURN_SPRING,
-            return_spring_preload=return_spring_preload,
-            pressure_spring_stiffness=_PRESSURE_SPRING,
-            name="Ferrarese & Uehara 5-DOF",
+            masses=masses, stem_stiffness=stem_stiffness, contact_stiffness=_CONTACT_STIFFNESS,
+            contact_damping=_CONTACT_DAMPING, seat_stiffness=_SEAT_STIFFNESS, seat_damping=_SEAT_DAMPING,
+            return_spring_stiffness=_RETURN_SPRING, return_spring_preload=return_spring_preload,
+            pressure_spring_stiffness=_PRESSURE_SPRING, name=name,
         )
         fields.update(overrides)
         return cls(**fields)

@@ -41,8 +41,15 @@ __all__ = [
     "ViscosityPressureLaw",
     "ViscosityTemperatureLaw",
     "WearModel",
+    "float_or_array",
     "validity_messages",
 ]
+
+
+def float_or_array(value):
+    """``value`` as a Python float when it is a scalar, else as a float ndarray (model outputs)."""
+    array = np.asarray(value, dtype=float)
+    return float(array) if array.ndim == 0 else array
 
 
 def validity_messages(

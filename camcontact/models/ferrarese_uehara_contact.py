@@ -36,6 +36,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..units import in_range, number_field
+from .base import float_or_array
 
 __all__ = [
     "CONSTANT_MODES",
@@ -91,11 +92,6 @@ def paper_modulus(E_reduced):
     .. math:: E = \\left[\\frac{1-\\nu_1^2}{E_1} + \\frac{1-\\nu_2^2}{E_2}\\right]^{-1} = \\frac{E'}{2}
     """
     return 0.5 * np.asarray(E_reduced, dtype=float)
-
-
-def _output(value):
-    value = np.asarray(value, dtype=float)
-    return float(value) if value.ndim == 0 else value
 
 
 def _arrays(model: str, **inputs) -> dict[str, np.ndarray]:
@@ -154,7 +150,7 @@ def hertz_contact_area(normal_force, R, E_reduced):
     """
     N = np.asarray(normal_force, dtype=float)
     E = paper_modulus(E_reduced)
-    return _output(math.pi * (0.75 * N * np.asarray(R, dtype=float) / E) ** (2.0 / 3.0))
+    return float_or_array(math.pi * (0.75 * N * np.asarray(R, dtype=float) / E) ** (2.0 / 3.0))
 
 
 def hutchings_film_thickness(R, eta0, V, E_reduced, normal_force):
@@ -177,7 +173,7 @@ def hutchings_film_thickness(R, eta0, V, E_reduced, normal_force):
     N_safe = np.where(loaded, N, 1.0)
     h = (2.8 * np.asarray(R, dtype=float) ** 0.77 * np.asarray(eta0, dtype=float) ** 0.65
          * np.abs(np.asarray(V, dtype=float)) ** 0.65 * E**-0.44 * N_safe**-0.21)
-    return _output(np.where(loaded, h, np.inf))
+    return float_or_array(np.where(loaded, h, np.inf))
 
 
 # ------------------------------------------------------------------ parameters

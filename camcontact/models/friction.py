@@ -21,7 +21,7 @@ import numpy as np
 from ..errors import InputError
 from ..registry import builtin
 from ..units import in_range, number_field
-from .base import FrictionModel
+from .base import FrictionModel, float_or_array
 from .ferrarese_uehara_contact import (
     K_AT_PAPER,
     RPM_PER_RAD_PER_S,
@@ -34,11 +34,6 @@ from .ferrarese_uehara_contact import (
 )
 
 __all__ = ["Coulomb", "FerrareseUeharaFriction"]
-
-
-def _output(value):
-    value = np.asarray(value, dtype=float)
-    return float(value) if value.ndim == 0 else value
 
 
 @builtin
@@ -83,9 +78,9 @@ class Coulomb(FrictionModel):
         N, u = np.broadcast_arrays(N, u)
         force = self.coefficient * N
         return {
-            "friction_force": _output(force),
-            "friction_coefficient": _output(np.where(N > 0.0, self.coefficient, 0.0)),
-            "friction_power": _output(force * np.abs(u)),
+            "friction_force": float_or_array(force),
+            "friction_coefficient": float_or_array(np.where(N > 0.0, self.coefficient, 0.0)),
+            "friction_power": float_or_array(force * np.abs(u)),
         }
 
 
@@ -180,10 +175,10 @@ class FerrareseUeharaFriction(FrictionModel):
             force = np.where(sheared, area * eta * V / np.where(sheared, h, 1.0), 0.0)
         coefficient = np.where(loaded, force / np.where(loaded, N, 1.0), 0.0)
         return {
-            "friction_force": _output(force),
-            "friction_coefficient": _output(coefficient),
-            "friction_power": _output(force * V),
-            "contact_area": _output(area),
-            "film_thickness_hutchings": _output(h),
+            "friction_force": float_or_array(force),
+            "friction_coefficient": float_or_array(coefficient),
+            "friction_power": float_or_array(force * V),
+            "contact_area": float_or_array(area),
+            "film_thickness_hutchings": float_or_array(h),
         }
 

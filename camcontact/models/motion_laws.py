@@ -32,6 +32,7 @@ and by exact reproduction of the thesis tables.
 
 from __future__ import annotations
 
+import abc
 import math
 from typing import ClassVar
 
@@ -84,8 +85,9 @@ class _Law(MotionLaw):
     direction: ClassVar[str] = "rise"
 
     @classmethod
+    @abc.abstractmethod
     def _shape(cls, x: np.ndarray) -> tuple:
-        raise NotImplementedError
+        """(y, dy/dx, d2y/dx2, d3y/dx3) of the law at checked ``x``; every concrete law implements it."""
 
     def derivatives(self, x):
         """(y, dy/dx, d²y/dx², d³y/dx³) [-] at normalised angles ``x`` in [0, 1] [-]."""

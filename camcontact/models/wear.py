@@ -20,7 +20,7 @@ import numpy as np
 from ..errors import InputError
 from ..registry import builtin
 from ..units import number_field, positive
-from .base import WearModel
+from .base import WearModel, float_or_array
 from .ferrarese_uehara_contact import (
     K_Q_PAPER,
     RPM_PER_RAD_PER_S,
@@ -32,11 +32,6 @@ from .ferrarese_uehara_contact import (
 )
 
 __all__ = ["Archard", "FerrareseUeharaWear"]
-
-
-def _output(value):
-    value = np.asarray(value, dtype=float)
-    return float(value) if value.ndim == 0 else value
 
 
 @builtin
@@ -90,7 +85,7 @@ class Archard(WearModel):
         if np.any(H <= 0.0):
             raise InputError(f"wear model 'archard': hardness = {H.min():.6g} Pa is out of range; "
                              "allowed: hardness > 0 [Pa]")
-        return {"wear_rate": _output(self.coefficient * N * np.abs(u) / H)}
+        return {"wear_rate": float_or_array(self.coefficient * N * np.abs(u) / H)}
 
 
 @builtin
@@ -167,4 +162,4 @@ class FerrareseUeharaWear(WearModel):
             rate = self.k_q * R ** (5.0 / 3.0) * arrays["E"] ** (-2.0 / 3.0) * N ** (2.0 / 3.0) * n
         else:
             rate = area * V
-        return {"wear_rate": _output(rate), "contact_area": _output(area)}
+        return {"wear_rate": float_or_array(rate), "contact_area": float_or_array(area)}

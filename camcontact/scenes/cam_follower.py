@@ -135,7 +135,7 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
         infinite = table.loc[~table["jerk_finite"], "angle [deg]"].tolist()
         if infinite:
             return {"motion_continuity": "acceleration jumps (infinite jerk) at " + ", ".join(f"{a:.4g}°" for a in infinite)}
-        jumps = table.loc[~table["jerk_continuous"], "angle [deg]"].tolist() if "jerk_continuous" in table else []
+        jumps = table.loc[~table["jerk_continuous"], "angle [deg]"].tolist()
         text = "C2 everywhere (finite jerk)"
         return {"motion_continuity": text + (f"; jerk jumps at {', '.join(f'{a:.4g}°' for a in jumps)}" if jumps else "")}
 
@@ -236,7 +236,7 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
     wear_spec = models["wear"]
 
     def model_state(s):
-        return {**s, "normal_force": s["normal_force"], "sliding_speed": s["u_s"], "angular_speed": s["angular_speed"]}
+        return {**s, **{alias: s[name] for alias, name in _ALIASES.items()}}
 
     friction_model = _LazyModel("friction_models", models["friction"], "friction",
                                 scene.friction_coefficient, "coulomb_coefficient")
