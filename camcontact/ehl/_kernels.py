@@ -36,6 +36,7 @@ def kernel_value(d, h):
     return _antiderivative((d + 0.5) * h) - _antiderivative((d - 0.5) * h)
 
 
+@register_jitable
 def deformation_direct(P, h):
     """w_i = sum_j K(i - j) P_j on a uniform grid (O(n^2)); H = H0 + X^2/2 - w/pi."""
     n = P.shape[0]
@@ -53,6 +54,7 @@ def deformation_direct(P, h):
 
 
 # ----------------------------------------------------------------------------- MLMI pieces
+@register_jitable
 def mlmi_anterpolate(u, first, weights):
     """Coarse 'charges' U = Pi^T u of fine values u on fine indices first..first+len(u)-1.
 
@@ -77,19 +79,28 @@ def mlmi_anterpolate(u, first, weights):
     return U, j_first
 
 
+@register_jitable
 def mlmi_direct(U, u_first, out_first, out_count, h, stride):
-    """W(I) = sum_J K(stride (I - J)) U(J) for I = out_first..out_first+out_count-1 (fine kernel of width h)."""
+    """W(I) = sum_J K(stride (I - J)) U(J) for I = out_first..out_first+out_count-1 (fine kernel of width h).
+
+    The kernel values are tabulated once per offset I - J (two logarithms each, not per pair).
+    """
+    lowest = out_first - (u_first + U.shape[0] - 1)
+    table = np.empty(out_count + U.shape[0] - 1)
+    for k in range(table.shape[0]):
+        table[k] = kernel_value(float(stride * (lowest + k)), h)
     W = np.zeros(out_count)
     for k in range(U.shape[0]):
         value = U[k]
         if value == 0.0:
             continue
-        J = u_first + k
+        base = out_first - (u_first + k) - lowest
         for o in range(out_count):
-            W[o] += kernel_value(float(stride * (out_first + o - J)), h) * value
+            W[o] += table[base + o] * value
     return W
 
 
+@register_jitable
 def mlmi_correction_tables(h, stride, m, weights):
     """c1(d), c2(e) for d, e in [-m, m]: exact kernel minus its interpolated approximation.
 
@@ -113,6 +124,7 @@ def mlmi_correction_tables(h, stride, m, weights):
     return c1, c2
 
 
+@register_jitable
 def mlmi_interpolate_correct(W, w_first, U, u_coarse_first, u, u_first, out_first, out_count, c1, c2, m, weights):
     """Fine result on out_first.. from coarse W (on w_first..), with both local corrections.
 
@@ -144,6 +156,39 @@ def mlmi_interpolate_correct(W, w_first, U, u_coarse_first, u, u_first, out_firs
             value += c1[i - j + m] * u[j - u_first]
         out[o] = value
     return out
+
+
+@register_jitable
+def mlmi_apply(P, h, m, c1s, c2s, weights, direct_below):
+    """w = K P by multilevel multi-integration, all levels in one call (no Python recursion).
+
+    Anterpolates P level by level (:func:`mlmi_anterpolate`) until at most ``direct_below``
+    source points remain, sums directly there (:func:`mlmi_direct`) and interpolates back with
+    the local corrections (:func:`mlmi_interpolate_correct`). ``c1s[d]``, ``c2s[d]`` are the
+    correction tables of stride 2^d (:func:`mlmi_correction_tables`), ``m`` their width.
+    """
+    sources = [P.copy()]
+    firsts = [0]
+    out_firsts = [0]
+    out_counts = [P.shape[0]]
+    u = sources[0]
+    while u.shape[0] > direct_below:
+        depth = len(sources) - 1
+        U, coarse_first = mlmi_anterpolate(u, firsts[depth], weights)
+        out_last = out_firsts[depth] + out_counts[depth] - 1
+        w_first = (out_firsts[depth] - 1) // 2 - 2
+        sources.append(U)
+        firsts.append(coarse_first)
+        out_firsts.append(w_first)
+        out_counts.append(out_last // 2 + 3 - w_first + 1)
+        u = U
+    deepest = len(sources) - 1
+    W = mlmi_direct(u, firsts[deepest], out_firsts[deepest], out_counts[deepest], h, 1 << deepest)
+    for depth in range(deepest - 1, -1, -1):
+        W = mlmi_interpolate_correct(W, out_firsts[depth + 1], sources[depth + 1], firsts[depth + 1],
+                                     sources[depth], firsts[depth], out_firsts[depth], out_counts[depth],
+                                     c1s[depth], c2s[depth], m, weights)
+    return W
 
 
 # ----------------------------------------------------------------------------- lubricant laws
@@ -228,6 +273,29 @@ def nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi)
 
 
 @register_jitable
+def law_state(p, viscosity_code, density_code, params):
+    """(rho, d rho/dP, ln eta, d ln eta/dP) at P; right-hand derivatives at P = 0, none below."""
+    if p < 0.0:
+        return 1.0, 0.0, 0.0, 0.0
+    if viscosity_code == 0:
+        log_eta = params[0] * p
+        dlog_eta = params[0]
+    else:
+        base = p * params[1]
+        power = math.exp(params[3] * math.log1p(base))
+        log_eta = params[2] * (power - 1.0)
+        dlog_eta = params[2] * params[3] * params[1] * power / (1.0 + base)
+    if density_code == 1:
+        q = p * params[4]
+        r = (1.0 + params[5] * q) / (1.0 + q)
+        d_r = params[4] * (params[5] - 1.0) / ((1.0 + q) * (1.0 + q))
+    else:
+        r = 1.0
+        d_r = 0.0
+    return r, d_r, log_eta, dlog_eta
+
+
+@register_jitable
 def nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, drh):
     """:func:`nodal_coefficients` plus d ln(xi)/dP and d rho/dP, sharing one log1p and exp per node."""
     for i in range(P.shape[0]):
@@ -239,21 +307,7 @@ def nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, dr
             dlx[i] = 0.0
             drh[i] = 0.0
             continue
-        if viscosity_code == 0:
-            log_eta = params[0] * p
-            dlog_eta = params[0]
-        else:
-            base = p * params[1]
-            power = math.exp(params[3] * math.log1p(base))  # (1 + p/p0')^z
-            log_eta = params[2] * (power - 1.0)
-            dlog_eta = params[2] * params[3] * params[1] * power / (1.0 + base)
-        if density_code == 1:
-            q = p * params[4]
-            r = (1.0 + params[5] * q) / (1.0 + q)
-            d_r = params[4] * (params[5] - 1.0) / ((1.0 + q) * (1.0 + q))
-        else:
-            r = 1.0
-            d_r = 0.0
+        r, d_r, log_eta, dlog_eta = law_state(p, viscosity_code, density_code, params)
         rho[i] = r
         xi[i] = r * hi * hi * hi * math.exp(-log_eta) / lam
         dlx[i] = d_r / r - dlog_eta
@@ -273,6 +327,7 @@ def operator_at(i, P, H, rho, xi, h):
     return poiseuille - wedge / h
 
 
+@register_jitable
 def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, out):
     """out_i = L_i(P, H) at interior nodes (Tsuha 2015 Eqs. 5.38, 5.42); boundary entries 0."""
     n = P.shape[0]
@@ -285,6 +340,7 @@ def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, out):
         out[i] = operator_at(i, P, H, rho, xi, h)
 
 
+@register_jitable
 def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
                  window, first, last, dry):
     """One hybrid Gauss–Seidel / Jacobi-distributive sweep for L(P) = f, in place on P and H.
@@ -378,16 +434,19 @@ PY = {
     "mlmi_direct": mlmi_direct,
     "mlmi_correction_tables": mlmi_correction_tables,
     "mlmi_interpolate_correct": mlmi_interpolate_correct,
+    "mlmi_apply": mlmi_apply,
 }
 _COMPILED: dict = {}
 
 
-def compiled(name: str):
-    """The numba-compiled twin of kernel ``name`` (compiled on first call, cached on disk)."""
-    function = _COMPILED.get(name)
+def compiled(name: str, table: dict | None = None):
+    """The numba-compiled twin of kernel ``name`` of ``table`` (default :data:`PY`), compiled on
+    first call and cached on disk."""
+    python = (PY if table is None else table)[name]
+    function = _COMPILED.get(python)
     if function is None:
         import numba
 
-        function = numba.njit(cache=True)(PY[name])
-        _COMPILED[name] = function
+        function = numba.njit(cache=True)(python)
+        _COMPILED[python] = function
     return function

@@ -31,7 +31,7 @@ from . import _kernels
 __all__ = ["METHODS", "Deformation", "default_correction"]
 
 METHODS = ("mlmi", "fft", "direct")
-_DIRECT_BELOW = 48  # MLMI evaluates directly once a level has this few source points
+DIRECT_BELOW = 48  #: MLMI evaluates directly once a level has this few source points
 
 
 def default_correction(n: int) -> int:
@@ -65,7 +65,7 @@ class Deformation:
         self.n, self.h, self.method = int(n), float(h), method
         self.correction = default_correction(n) if correction is None else int(correction)
         self._kernel = _kernels.compiled if compiled else _kernels.PY.__getitem__
-        self._tables: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+        self._tables: tuple[np.ndarray, np.ndarray] | None = None
         self._fft_kernel = None
         if method == "fft":
             size = 1 << int(math.ceil(math.log2(2 * n)))
@@ -86,24 +86,17 @@ class Deformation:
         if self.method == "fft":
             spectrum = np.fft.rfft(P, self._fft_size) * self._fft_kernel
             return np.fft.irfft(spectrum, self._fft_size)[: self.n]
-        return self._mlmi(P, 0, 0, self.n, 1)
+        return self._mlmi(P)
 
-    def _tables_for(self, stride: int):
-        tables = self._tables.get(stride)
-        if tables is None:
-            tables = self._kernel("mlmi_correction_tables")(self.h, stride, self.correction, _kernels.INTERP6)
-            self._tables[stride] = tables
-        return tables
+    def _mlmi_tables(self) -> tuple[np.ndarray, np.ndarray]:
+        """Correction tables (c1, c2) of strides 1, 2, 4, ... (rows), enough for every MLMI level."""
+        if self._tables is None:
+            depths = max(1, int(math.ceil(math.log2(max(self.n, 2)))) + 1)
+            pairs = [self._kernel("mlmi_correction_tables")(self.h, 1 << d, self.correction, _kernels.INTERP6)
+                     for d in range(depths)]
+            self._tables = (np.array([c1 for c1, _ in pairs]), np.array([c2 for _, c2 in pairs]))
+        return self._tables
 
-    def _mlmi(self, u: np.ndarray, first: int, out_first: int, out_count: int, stride: int) -> np.ndarray:
-        if u.shape[0] <= _DIRECT_BELOW:
-            return self._kernel("mlmi_direct")(u, first, out_first, out_count, self.h, stride)
-        U, coarse_first = self._kernel("mlmi_anterpolate")(u, first, _kernels.INTERP6)
-        out_last = out_first + out_count - 1
-        w_first = (out_first - 1) // 2 - 2
-        w_last = out_last // 2 + 3
-        W = self._mlmi(U, coarse_first, w_first, w_last - w_first + 1, 2 * stride)
-        c1, c2 = self._tables_for(stride)
-        return self._kernel("mlmi_interpolate_correct")(
-            W, w_first, U, coarse_first, u, first, out_first, out_count, c1, c2, self.correction, _kernels.INTERP6
-        )
+    def _mlmi(self, P: np.ndarray) -> np.ndarray:
+        c1s, c2s = self._mlmi_tables()
+        return self._kernel("mlmi_apply")(P, self.h, self.correction, c1s, c2s, _kernels.INTERP6, DIRECT_BELOW)

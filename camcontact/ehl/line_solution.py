@@ -68,6 +68,8 @@ class LineEHLSolution:
     H: np.ndarray = attrs.field(repr=False, eq=False)
     H0: float
     record: ConvergenceRecord
+    #: the solver settings that produced the solution (multigrid: the attempt that was kept)
+    settings: object = attrs.field(default=None, eq=False)
 
     @property
     def H_min(self) -> float:

@@ -104,13 +104,12 @@ class Multigrid(FilmModel):
         """Films [m] from the numerical solution, with the solution and its convergence record.
 
         ``initial`` (a previous :class:`~camcontact.ehl.line_solution.LineEHLSolution`, e.g. of the
-        neighbouring cam angle) warm-starts the solver instead of its full-multigrid start.
+        neighbouring cam angle) warm-starts the solver instead of its full-multigrid start; its
+        pressures are interpolated onto this problem's grid (the automatic domain may differ).
         """
         from ..ehl.line_multigrid import solve_multigrid
 
         problem = self.problem(R, w, E_reduced, u_m, eta0, alpha, lubricant_state, density_law)
-        if initial is not None and tuple(initial.problem.domain) != tuple(problem.domain):
-            initial = None  # a warm start must live on the same grid
         solution = solve_multigrid(problem, self.levels, tolerance=self.tolerance, strict=self.strict,
                                    initial=initial)
         values = solution.dimensional(R, w, E_reduced)

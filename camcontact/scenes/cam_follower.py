@@ -445,21 +445,27 @@ def _cycle_films(model, s, u_film) -> dict:
 
 
 def _solve_numerically(model, state, previous):
-    """Multigrid film warm-started from ``previous``; on divergence once more from a cold start.
+    """Multigrid film warm-started from ``previous``; if that diverges or does not converge, once
+    more from a cold (full-multigrid) start, keeping a converged result if either gives one.
 
     Returns (produced, None) or (None, failure message).
     """
     from ..errors import ConvergenceError
 
     failure = None
+    best = None
     for initial in ((previous, None) if previous is not None else (None,)):
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # the record says it; the regime column reports it
-                return model.evaluate(**state, initial=initial), None
+                produced = model.evaluate(**state, initial=initial)
         except ConvergenceError as exc:
             failure = str(exc).split(";")[0]
-    return None, failure
+            continue
+        if produced["convergence"].converged:
+            return produced, None
+        best = best or produced  # not converged: the record says so in the regime column
+    return (best, None) if best is not None else (None, failure)
 
 
 def _films(model) -> tuple[str, ...]:

@@ -90,3 +90,32 @@ def test_high_speed_jump_is_detected_and_reported():
                          damping_ratio=0.06)
     again = cc.Analysis(flat_scene(angles, valve_train=safe, speed="4000 rpm"), outputs=["jump"]).run()
     assert again["jump"].startswith("no jump")
+
+
+def test_a_warm_start_that_does_not_converge_is_retried_cold():
+    """The LS-1 roller at 50° (consistent convention, M = 6.00, L = 19.20, level 8): warm-started from
+    49° every attempt of the ladder stagnated or diverged, while a cold full-multigrid start
+    converges. The film step therefore retries cold when the warm result is not converged (not only
+    when it raises), and keeps the converged one."""
+    from camcontact.scenes.cam_follower import _solve_numerically
+
+    class Scripted:
+        """A film model whose warm start does not converge and whose cold start does."""
+
+        name = "multigrid"
+
+        def __init__(self):
+            self.starts = []
+
+        def evaluate(self, initial=None, **state):
+            self.starts.append("warm" if initial is not None else "cold")
+            record = type("Record", (), {"converged": initial is None})()
+            return {"h_min": 1e-6 if initial is None else 2e-6, "convergence": record}
+
+    model = Scripted()
+    produced, failure = _solve_numerically(model, {}, previous=object())
+    assert failure is None and model.starts == ["warm", "cold"]
+    assert produced["convergence"].converged and produced["h_min"] == 1e-6
+    model = Scripted()
+    produced, _ = _solve_numerically(model, {}, previous=None)  # no neighbour: one cold start only
+    assert model.starts == ["cold"] and produced["convergence"].converged

@@ -46,3 +46,24 @@ def test_failure_is_loud_and_carries_the_record():
             assert "M = 20" in str(error)
         else:  # should it converge one day, it must be a real solution
             assert solution.record.converged and np.all(np.isfinite(solution.P))
+
+
+def test_stagnating_attempt_hands_over_to_the_conservative_settings():
+    """The LS-1 roller cam at 9° (thesis convention, M = 2.915, L = 18.51): the default F-cycles
+    circle in a limit cycle (residual 6e-5 for all 40 cycles before the stagnation rule); the
+    attempt now stops after 10 cycles and the conservative F-cycles converge. Their film agrees
+    with an independent solve by conservative W-cycles at a tighter tolerance."""
+    from camcontact.ehl.line_multigrid import ROBUST, STAGNATION, MultigridSettings, _stagnated
+    from camcontact.models.film_multigrid import automatic_domain
+
+    assert not _stagnated([1e-3 * 0.6**k for k in range(12)])  # slow but steady: keeps going
+    assert _stagnated([6e-5, 5.7e-5, 5.9e-5, 6.4e-5, 6.5e-5, 6.3e-5, 6.3e-5, 6.3e-5, 6.4e-5, 6.5e-5])
+    problem = LineEHLProblem(M=2.9147, L=18.507, domain=automatic_domain(2.9147, 18.507))
+    solution = solve_multigrid(problem, 8, strict=True)
+    record = solution.record
+    assert "stagnated" in record.message and "converged with settings" in record.message
+    assert solution.settings == MultigridSettings(**ROBUST[0])
+    assert record.cycles < 40 and STAGNATION[0] <= 10
+    check = solve_multigrid(problem, 8, tolerance=1e-9, settings=MultigridSettings(**ROBUST[1]), strict=True)
+    assert solution.H_min == pytest.approx(check.H_min, abs=1e-6)
+    assert solution.H0 == pytest.approx(check.H0, abs=1e-6)

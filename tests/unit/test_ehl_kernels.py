@@ -144,3 +144,71 @@ def test_newton_jacobian_matches_finite_differences(problem):
             np.testing.assert_allclose(J_P[1:-1, j], numeric[1:-1], rtol=1e-5, atol=1e-6 * np.abs(numeric).max())
         numeric = (grid.residual(P, grid.film(P, H0 + 1e-7)) - grid.residual(P, grid.film(P, H0 - 1e-7))) / 2e-7
         np.testing.assert_allclose(J_H0[1:-1], numeric[1:-1], rtol=1e-5, atol=1e-6 * np.abs(numeric).max())
+
+
+@pytest.mark.parametrize("M, L, n", [(20, 10, 15), (2.9, 18.5, 15), (200, 5, 29)])
+def test_coarse_newton_kernel_equals_the_dense_reference_newton(M, L, n):
+    """The compiled coarsest-grid solver and its twin reproduce the vectorised reference
+    (same Fischer–Burmeister Newton, same iterations) for a FAS right-hand side."""
+    from camcontact.ehl import _fas_kernels
+    from camcontact.ehl.line_operator import LineGrid
+    from camcontact.ehl.line_reference import newton_complementarity
+
+    problem = LineEHLProblem(M=M, L=L)
+    grid = LineGrid(problem, n, "direct")
+    K = kernel_coefficients(grid.h, n)[np.abs(np.arange(n)[:, None] - np.arange(n)[None, :])] / math.pi
+    P0 = np.where(np.abs(grid.X) < 1, np.sqrt(np.clip(1 - grid.X**2, 0, None)), 0.0)
+    f = np.zeros(n)
+    f[1:-1] = 1e-3 * np.random.default_rng(1).standard_normal(n - 2)
+    P_ref, H0_ref, residuals, _, converged, _ = newton_complementarity(grid, P0, 0.3, f=f, f_load=0.01, K_over_pi=K,
+                                                                      tolerance=1e-11, max_iterations=60)
+    assert converged
+    for function in (_fas_kernels.coarse_newton, _fas_kernels.compiled("coarse_newton")):
+        P, H0, iterations, status = function(P0, 0.3, f, 0.01, grid.parabola, K, grid.h, problem.lam,
+                                             *problem.law_codes, problem.law_parameters, True, 1e-11, 60)
+        assert status == 0 and iterations == len(residuals)
+        np.testing.assert_allclose(P, P_ref, atol=1e-12)
+        assert H0 == pytest.approx(H0_ref, abs=1e-12)
+
+
+def test_dense_solver_reports_a_singular_matrix_instead_of_raising():
+    """The coarse Newton's elimination returns ok = False for a singular (or NaN) matrix; the
+    kernel then reports status 2 and the cycle falls back to relaxation sweeps."""
+    from camcontact.ehl._fas_kernels import solve_dense
+
+    x, ok = solve_dense(np.array([[2.0, 1.0], [1.0, 1.0]]), np.array([3.0, 2.0]))
+    assert ok and np.allclose(x, [1.0, 1.0])
+    assert not solve_dense(np.array([[1.0, 2.0], [2.0, 4.0]]), np.array([1.0, 2.0]))[1]
+    assert not solve_dense(np.array([[np.nan, 0.0], [0.0, 1.0]]), np.array([1.0, 2.0]))[1]
+
+
+@pytest.mark.parametrize("kind", ["V", "F", "W"])
+def test_compiled_cycle_equals_its_twin(kind):
+    """One FAS cycle (schedule executor) compiled and as plain Python from the same state."""
+    from camcontact.ehl.line_multigrid import MultigridSettings, _Solver
+
+    problem = LineEHLProblem(M=20, L=10, alpha=1.7e-8, z=0.68)
+    settings = MultigridSettings(cycle=kind)
+    results = []
+    for compiled in (False, True):
+        solver = _Solver(problem, 4, settings, compiled=compiled)
+        X = solver.levels[-1].X
+        P = np.where(np.abs(X) < 1, np.sqrt(np.clip(1 - X * X, 0, None)), 0.0)
+        results.append(solver.cycle(3, P, 0.2, np.zeros(X.size), 0.0) + (solver.work,))
+    (P_py, H0_py, work_py), (P_nb, H0_nb, work_nb) = results
+    np.testing.assert_allclose(P_nb, P_py, rtol=1e-11, atol=1e-12)
+    assert H0_nb == pytest.approx(H0_py, abs=1e-12) and work_nb == pytest.approx(work_py)
+
+
+def test_cycle_schedules_visit_the_coarse_grids_as_v_f_w_cycles():
+    """Coarsest-grid solves of one cycle from level index 3 down to 0: a V-cycle solves once; a
+    W-cycle visits each coarser level twice except the coarsest (2 x 2 x 1 = 4); an F-cycle is
+    F(k) = F(k-1) + V(k-1) with F(1) = 1 (1 + 1 + 1 = 3)."""
+    from camcontact.ehl._fas_kernels import DOWN, SOLVE, UP, cycle_schedule
+
+    def solves(kind):
+        schedule = cycle_schedule(3, kind, 0)
+        assert (schedule[:, 0] == DOWN).sum() == (schedule[:, 0] == UP).sum()
+        return int((schedule[:, 0] == SOLVE).sum())
+
+    assert (solves("V"), solves("W"), solves("F")) == (1, 4, 3)

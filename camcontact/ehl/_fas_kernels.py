@@ -1,0 +1,410 @@
+"""Compiled FAS cycles of the line-contact EHL multigrid solver, with their plain-Python twins.
+
+One call of :func:`fas_cycle` runs a whole V, W or F cycle: the recursion of
+:mod:`camcontact.ehl.line_multigrid` is unrolled in Python once into a *schedule* of
+operations (:func:`cycle_schedule`) — ``DOWN`` k (pre-relax level k, form the FAS coarse
+problem on k - 1), ``SOLVE`` k (coarsest grid, exactly) and ``UP`` k (correct level k from
+k - 1, post-relax) — which the kernel executes over flat per-level buffers. Relaxation, films
+(MLMI or direct), residuals and the coarsest-grid Newton solve (:func:`coarse_newton`) all run
+compiled, so a cycle costs no Python call per level visit (a W-cycle on 8 levels visits the
+coarse grids 255 times). As with :mod:`camcontact.ehl._kernels`, each function is plain Python
+that :func:`compiled` hands to numba; the tests run the twins on small grids.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba.extending import register_jitable
+
+from . import _kernels
+from ._kernels import deformation_direct, law_state, mlmi_apply, relax_hybrid, reynolds_residual
+
+__all__ = ["DOWN", "PY", "SOLVE", "UP", "coarse_newton", "compiled", "cycle_schedule", "fas_cycle"]
+
+DOWN, SOLVE, UP = 0, 1, 2
+
+
+def cycle_schedule(k: int, kind: str, coarsest: int) -> np.ndarray:
+    """Operations (op, level index) of one ``kind`` cycle (V, W or F) from level index k down to
+    level index ``coarsest``: a V-cycle visits the next coarser level once, a W-cycle twice, an
+    F-cycle once as an F and once as a V (Venner & Lubrecht 2000 §3.7)."""
+    ops: list[tuple[int, int]] = []
+
+    def visit(k: int, kind: str) -> None:
+        if k <= coarsest:
+            ops.append((SOLVE, k))
+            return
+        ops.append((DOWN, k))
+        visits = {"V": ("V",), "W": ("W", "W"), "F": ("F", "V")}[kind]
+        if k - 1 <= coarsest:
+            visits = visits[:1]
+        for inner in visits:
+            visit(k - 1, inner)
+        ops.append((UP, k))
+
+    visit(k, kind)
+    return np.array(ops, dtype=np.int64).reshape(-1, 2)
+
+
+@register_jitable
+def solve_dense(A, b):
+    """x with A x = b by Gaussian elimination with partial pivoting (A, b overwritten); (x, ok)."""
+    n = b.shape[0]
+    for k in range(n):
+        pivot = k
+        for r in range(k + 1, n):
+            if abs(A[r, k]) > abs(A[pivot, k]):
+                pivot = r
+        if not abs(A[pivot, k]) > 0.0:  # also catches NaN
+            return b, False
+        if pivot != k:
+            for c in range(n):
+                A[k, c], A[pivot, c] = A[pivot, c], A[k, c]
+            b[k], b[pivot] = b[pivot], b[k]
+        for r in range(k + 1, n):
+            factor = A[r, k] / A[k, k]
+            if factor != 0.0:
+                for c in range(k, n):
+                    A[r, c] -= factor * A[k, c]
+                b[r] -= factor * b[k]
+    x = np.empty(n)
+    for k in range(n - 1, -1, -1):
+        value = b[k]
+        for c in range(k + 1, n):
+            value -= A[k, c] * x[c]
+        x[k] = value / A[k, k]
+    return x, True
+
+
+@register_jitable
+def dense_state(P, H0, f, parabola, K_over_pi, h, lam, viscosity_code, density_code, params, elastic, H, L):
+    """Film H and L - f (interior; 0 at the ends) on a grid with the dense deformation matrix K/pi."""
+    n = P.shape[0]
+    for i in range(n):
+        value = H0 + parabola[i]
+        if elastic:
+            for j in range(n):
+                if P[j] != 0.0:
+                    value -= K_over_pi[i, j] * P[j]
+        H[i] = value
+    reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, L)
+    for i in range(1, n - 1):
+        L[i] -= f[i]
+
+
+@register_jitable
+def fischer_burmeister(a, b):
+    """(phi, d phi/da, d phi/db) of phi(a, b) = a + b - sqrt(a^2 + b^2)."""
+    r = math.hypot(a, b)
+    if r > 0.0:
+        return a + b - r, 1.0 - a / r, 1.0 - b / r
+    return 0.0, 1.0 - 1.0 / math.sqrt(2.0), 1.0 - 1.0 / math.sqrt(2.0)
+
+
+@register_jitable
+def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, h, lam, viscosity_code, density_code, params, elastic,
+                  tolerance, max_iterations):
+    """Semi-smooth Newton for the complementarity problem L(P, H0) = f, load = f_load on a small grid.
+
+    The coarsest-grid solver of the multigrid cycles: the same method as the dense reference
+    :func:`camcontact.ehl.line_reference.newton_complementarity` (Fischer–Burmeister equation
+    phi(P_i, -s_i (L_i - f_i)) = 0 with s_i = 1/|dL_i/dP_i| per interior node, the trapezoidal
+    load balance h sum P - pi/2 = f_load for H0, exact Jacobian, backtracking on
+    |phi|^2 + load^2), written with loops so that it compiles; meant for n up to about 100
+    (dense Jacobian; its deformation part is K/pi times a four-diagonal matrix, O(n^2)).
+
+    Returns (P >= 0, H0, iterations, status): status 0 converged (max |phi| and |load error|
+    below ``tolerance``), 1 non-finite Jacobian, 2 singular Newton matrix, 3 line search failed,
+    4 iteration limit. P and H0 are the last accepted iterate.
+    """
+    n = P.shape[0]
+    m = n - 2
+    P = P.copy()
+    H = np.empty(n)
+    L = np.empty(n)
+    H_new = np.empty(n)
+    L_new = np.empty(n)
+    rho = np.empty(n)
+    drho = np.empty(n)
+    xi = np.empty(n)
+    dxi_dP = np.empty(n)
+    dxi_dH = np.empty(n)
+    direct = np.zeros((n, 4))  # dL_i/dP_m at fixed films, m = i - 2 + c
+    dL_dH = np.zeros((n, 4))  # dL_i/dH_m, m = i - 2 + c
+    J = np.empty((n, n))
+    J_H0 = np.empty(n)
+    scale = np.empty(n)
+    phi = np.empty(m)
+    da = np.empty(m)
+    db = np.empty(m)
+    A = np.empty((m + 1, m + 1))
+    rhs = np.empty(m + 1)
+    P_new = np.empty(n)
+    hh = h * h
+    dense_state(P, H0, f, parabola, K_over_pi, h, lam, viscosity_code, density_code, params, elastic, H, L)
+    status = 4
+    iterations = 0
+    for _ in range(max_iterations):
+        iterations += 1
+        # --- Jacobian of L with respect to P (through the films too) and H0
+        for j in range(n):
+            r, d_r, log_eta, dlog_eta = law_state(P[j], viscosity_code, density_code, params)
+            e = math.exp(-log_eta)
+            gap = max(H[j], 0.0)
+            rho[j] = r
+            drho[j] = d_r
+            xi[j] = r * gap * gap * gap * e / lam
+            dxi_dH[j] = 3.0 * r * gap * gap * e / lam
+            dxi_dP[j] = xi[j] * (d_r / r - dlog_eta)
+        for i in range(n):
+            for c in range(4):
+                direct[i, c] = 0.0
+                dL_dH[i, c] = 0.0
+        for i in range(1, n - 1):
+            left = 0.5 * (xi[i - 1] + xi[i])
+            right = 0.5 * (xi[i] + xi[i + 1])
+            direct[i, 1] += left / hh
+            direct[i, 2] -= (left + right) / hh
+            direct[i, 3] += right / hh
+            a = (P[i - 1] - P[i]) / hh
+            c = (P[i + 1] - P[i]) / hh
+            for q in range(3):
+                weight = 0.5 * a if q == 0 else (0.5 * (a + c) if q == 1 else 0.5 * c)
+                direct[i, q + 1] += weight * dxi_dP[i - 1 + q]
+                dL_dH[i, q + 1] += weight * dxi_dH[i - 1 + q]
+            for k in range(2 if i == 1 else 3):
+                if i == 1:
+                    weight = 1.0 if k == 0 else -1.0
+                else:
+                    weight = 1.5 if k == 0 else (-2.0 if k == 1 else 0.5)
+                direct[i, 2 - k] -= weight * drho[i - k] * H[i - k] / h
+                dL_dH[i, 2 - k] -= weight * rho[i - k] / h
+        finite = True
+        for i in range(n):
+            total = 0.0
+            for j in range(n):
+                J[i, j] = 0.0
+            for c in range(4):
+                mm = i - 2 + c
+                if mm < 0 or mm >= n:
+                    continue
+                J[i, mm] += direct[i, c]
+                total += dL_dH[i, c]
+                if elastic and dL_dH[i, c] != 0.0:
+                    for j in range(n):
+                        J[i, j] -= dL_dH[i, c] * K_over_pi[mm, j]
+            J_H0[i] = total
+            for j in range(n):
+                if not math.isfinite(J[i, j]):
+                    finite = False
+        if not finite:
+            status = 1
+            break
+        # --- Fischer-Burmeister residual and load
+        residual = 0.0
+        merit = 0.0
+        for k in range(m):
+            i = k + 1
+            scale[i] = 1.0 / max(abs(J[i, i]), 1e-300)
+            phi[k], da[k], db[k] = fischer_burmeister(P[i], -scale[i] * L[i])
+            residual = max(residual, abs(phi[k]))
+            merit += phi[k] * phi[k]
+        load = h * (P.sum() - 0.5 * (P[0] + P[n - 1])) - 0.5 * math.pi - f_load
+        merit += load * load
+        if residual < tolerance and abs(load) < tolerance:
+            status = 0
+            break
+        # --- Newton step for (P_1..P_{n-2}, H0)
+        for k in range(m):
+            i = k + 1
+            factor = -db[k] * scale[i]
+            for l in range(m):
+                A[k, l] = factor * J[i, l + 1]
+            A[k, k] += da[k]
+            A[k, m] = factor * J_H0[i]
+            rhs[k] = -phi[k]
+        for l in range(m):
+            A[m, l] = h
+        A[m, m] = 0.0
+        rhs[m] = -load
+        step, ok = solve_dense(A, rhs)
+        if not ok:
+            status = 2
+            break
+        # --- backtracking on the merit function
+        t = 1.0
+        accepted = False
+        while t > 1e-6:
+            P_new[0] = P[0]
+            P_new[n - 1] = P[n - 1]
+            for k in range(m):
+                P_new[k + 1] = P[k + 1] + t * step[k]
+            H0_new = H0 + t * step[m]
+            dense_state(P_new, H0_new, f, parabola, K_over_pi, h, lam, viscosity_code, density_code, params,
+                        elastic, H_new, L_new)
+            trial = 0.0
+            for k in range(m):
+                value, _, _ = fischer_burmeister(P_new[k + 1], -scale[k + 1] * L_new[k + 1])
+                trial += value * value
+            load_new = h * (P_new.sum() - 0.5 * (P_new[0] + P_new[n - 1])) - 0.5 * math.pi - f_load
+            trial += load_new * load_new
+            if math.isfinite(trial) and trial <= (1.0 - 1e-4 * t) * merit:
+                accepted = True
+                break
+            t *= 0.5
+        if not accepted:
+            status = 3
+            break
+        for i in range(n):
+            P[i] = P_new[i]
+            H[i] = H_new[i]
+            L[i] = L_new[i]
+        H0 = H0_new
+    for i in range(n):
+        if P[i] < 0.0:
+            P[i] = 0.0
+    return P, H0, iterations, status
+
+
+@register_jitable
+def level_film(k, P, H0, n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights, direct_below, elastic):
+    """H = H0 + X^2/2 - w/pi on level k (w by MLMI or directly)."""
+    n = n_of[k]
+    o = offsets[k]
+    H = np.empty(n)
+    if not elastic:
+        for i in range(n):
+            H[i] = H0 + parabola[o + i]
+        return H
+    if mlmi_on[k]:
+        m = m_of[k]
+        w = mlmi_apply(P, h_of[k], m, c1s[k, :, :2 * m + 1], c2s[k, :, :2 * m + 1], weights, direct_below)
+    else:
+        w = deformation_direct(P, h_of[k])
+    for i in range(n):
+        H[i] = H0 + parabola[o + i] - w[i] / math.pi
+    return H
+
+
+@register_jitable
+def level_load(P, h):
+    """h sum (P_j + P_{j+1})/2 - pi/2 (trapezoidal load balance)."""
+    return h * (P.sum() - 0.5 * (P[0] + P[P.shape[0] - 1])) - 0.5 * math.pi
+
+
+def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, n_of, offsets, h_of, parabola, K_local,
+              mlmi_on, m_of, c1s, c2s, weights, direct_below, K_dense, lam, viscosity_code, density_code, params,
+              elastic, real_settings, int_settings):
+    """Execute one cycle ``schedule`` (:func:`cycle_schedule`) in place on the level buffers.
+
+    Level k's pressures, FAS right-hand sides and frozen-dry flags are the slices
+    ``offsets[k]:offsets[k] + n_of[k]`` of ``P_all``, ``f_all`` and ``dry_all`` (``P_old``
+    keeps the injected coarse pressures a correction is measured from); ``H0s[k]`` and
+    ``loads[k]`` are its film constant and load right-hand side. ``K_local[k]`` holds
+    K(0..15) of level k for the relaxation, ``c1s``/``c2s`` its MLMI tables (``mlmi_on``),
+    ``K_dense[k]`` the dense K/pi of a coarsest level. ``real_settings`` = (omega_gs,
+    omega_jacobi, switch, h0_relaxation); ``int_settings`` = (pre_sweeps, post_sweeps,
+    coarsest_sweeps, window, correct_pressurised_only, freeze_free_boundary,
+    dry_keeps_own_equation). Returns the work done in finest-grid relaxation units.
+    """
+    omega_gs, omega_jacobi, switch, h0_relaxation = real_settings[0], real_settings[1], real_settings[2], real_settings[3]
+    pre, post, coarsest_sweeps, window = int_settings[0], int_settings[1], int_settings[2], int_settings[3]
+    pressurised_only = int_settings[4] != 0
+    freeze_boundary = int_settings[5] != 0
+    dry_own = int_settings[6] != 0
+    n_finest = n_of[n_of.shape[0] - 1]
+    zero_K = np.zeros(K_local.shape[1])
+    work = 0.0
+    for step in range(schedule.shape[0]):
+        op = schedule[step, 0]
+        k = schedule[step, 1]
+        n = n_of[k]
+        o = offsets[k]
+        h = h_of[k]
+        P = P_all[o:o + n]
+        f = f_all[o:o + n]
+        dry = dry_all[o:o + n]
+        K = K_local[k] if elastic else zero_K
+        sweeps = pre if op == DOWN else (post if op == UP else 0)
+        if op == UP:  # coarse-grid correction from level k - 1 first, then the post-sweeps
+            oc = offsets[k - 1]
+            correction = np.empty(n)
+            for i in range(n):
+                if i % 2 == 0:
+                    change = P_all[oc + i // 2] - P_old[oc + i // 2]
+                else:
+                    j = i // 2
+                    change = 0.5 * (P_all[oc + j] - P_old[oc + j] + P_all[oc + j + 1] - P_old[oc + j + 1])
+                if pressurised_only:  # only where the node and both neighbours are wet
+                    if not (P[i] > 0.0 and (i == 0 or P[i - 1] > 0.0) and (i == n - 1 or P[i + 1] > 0.0)):
+                        change = 0.0
+                correction[i] = change  # applied after the mask has seen the whole old state
+            for i in range(n):
+                P[i] = max(P[i] + correction[i], 0.0)
+            P[0] = 0.0
+            P[n - 1] = 0.0
+            H0s[k] = H0s[k - 1]
+        for _ in range(sweeps):
+            H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                           direct_below, elastic)
+            relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
+                         window, 1, n - 2, dry)
+            work += (n - 2) / n_finest
+        if op == SOLVE:
+            P_new, H0_new, iterations, status = coarse_newton(
+                P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], h, lam, viscosity_code,
+                density_code, params, elastic, 1e-11, 60)
+            work += iterations * n / n_finest
+            if status == 0:
+                for i in range(n):
+                    P[i] = P_new[i]
+                H0s[k] = H0_new
+            else:  # relaxation sweeps with H0 updates instead
+                for _ in range(coarsest_sweeps):
+                    H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                                   direct_below, elastic)
+                    relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi,
+                                 switch, window, 1, n - 2, dry)
+                    work += (n - 2) / n_finest
+                    H0s[k] += h0_relaxation * (level_load(P, h) - loads[k])
+        elif op == DOWN:  # the FAS problem of level k - 1
+            H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                           direct_below, elastic)
+            r = np.empty(n)
+            reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, r)
+            for i in range(n):
+                r[i] = 0.0 if P[i] <= 0.0 else f[i] - r[i]
+            if freeze_boundary:  # no residual transfer at nodes beside the cavitation boundary
+                for i in range(n):
+                    if (i > 0 and P[i - 1] <= 0.0) or (i < n - 1 and P[i + 1] <= 0.0):
+                        r[i] = 0.0
+            r_load = loads[k] - level_load(P, h)
+            nc = n_of[k - 1]
+            oc = offsets[k - 1]
+            Pc = P_all[oc:oc + nc]
+            for j in range(nc):
+                Pc[j] = P[2 * j]
+                P_old[oc + j] = P[2 * j]
+            Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                            direct_below, elastic)
+            fc = f_all[oc:oc + nc]
+            reynolds_residual(Pc, Hc, h_of[k - 1], lam, viscosity_code, density_code, params, fc)
+            for j in range(1, nc - 1):
+                fc[j] += 0.25 * r[2 * j - 1] + 0.5 * r[2 * j] + 0.25 * r[2 * j + 1]
+            if dry_own:  # coarse nodes dry with both neighbours dry keep their own equation
+                for j in range(nc):
+                    if Pc[j] <= 0.0 and (j == 0 or Pc[j - 1] <= 0.0) and (j == nc - 1 or Pc[j + 1] <= 0.0):
+                        fc[j] = f[2 * j]
+            loads[k - 1] = level_load(Pc, h_of[k - 1]) + r_load
+            H0s[k - 1] = H0s[k]
+    return work
+
+
+PY = {"coarse_newton": coarse_newton, "fas_cycle": fas_cycle}
+
+
+def compiled(name: str):
+    """The numba-compiled twin of kernel ``name`` of this module."""
+    return _kernels.compiled(name, PY)
