@@ -2,8 +2,8 @@
 
 Every kernel is written once, as plain Python on float64 arrays (the *twin*, used by the
 tests on small grids and readable as the specification); :func:`compiled` returns the
-``numba.njit(cache=True)`` version of the same function, compiled on first use. Helpers
-are ``register_jitable`` so that they run both inside compiled code and as Python.
+``numba.njit(cache=True, nogil=True)`` version of the same function, compiled on first use.
+Helpers are ``register_jitable`` so that they run both inside compiled code and as Python.
 
 Importing this module imports numba but compiles nothing.
 """
@@ -441,12 +441,13 @@ _COMPILED: dict = {}
 
 def compiled(name: str, table: dict | None = None):
     """The numba-compiled twin of kernel ``name`` of ``table`` (default :data:`PY`), compiled on
-    first call and cached on disk."""
+    first call and cached on disk. The compiled kernels release the GIL (``nogil``), so solves in
+    different threads run in parallel."""
     python = (PY if table is None else table)[name]
     function = _COMPILED.get(python)
     if function is None:
         import numba
 
-        function = numba.njit(cache=True)(python)
+        function = numba.njit(cache=True, nogil=True)(python)
         _COMPILED[python] = function
     return function

@@ -54,6 +54,11 @@ class Multigrid(FilmModel):
         Raise ConvergenceError when the solver does not converge (default: warn).
     piezoviscosity, elasticity : bool
         Switched off by an Analysis whose scene switches the effect off.
+    threads : int, optional
+        Threads for the independent solves of one analysis — a cam cycle is cut into this many
+        arcs, each warm-started angle by angle (the compiled kernels release the GIL, so two
+        threads nearly halve a cycle on two cores). None: the CPU count, at most 4. The films
+        of different thread counts agree within ``tolerance`` (each arc starts cold).
 
     References
     ----------
@@ -74,6 +79,12 @@ class Multigrid(FilmModel):
     strict: bool = False
     piezoviscosity: bool = True
     elasticity: bool = True
+    threads: int | None = attrs.field(default=None)
+
+    @threads.validator
+    def _check_threads(self, attribute, value):
+        if value is not None and (isinstance(value, bool) or not isinstance(value, int) or value < 1):
+            raise InputError(f"film model 'multigrid': threads = {value!r}; allowed: None or an integer >= 1")
 
     def problem(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson"):
         """The dimensionless :class:`~camcontact.ehl.line_problem.LineEHLProblem` of the contact."""

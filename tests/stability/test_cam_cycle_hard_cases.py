@@ -119,3 +119,27 @@ def test_a_warm_start_that_does_not_converge_is_retried_cold():
     model = Scripted()
     produced, _ = _solve_numerically(model, {}, previous=None)  # no neighbour: one cold start only
     assert model.starts == ["cold"] and produced["convergence"].converged
+
+
+def test_threaded_arcs_agree_with_one_warm_started_chain():
+    """The numerical film of a cycle cut into two warm-started arcs (threads) equals the single chain
+    within the solver tolerance (the second arc starts cold, so the iterates differ), angle by angle,
+    all converged; the thread count is validated."""
+    from camcontact.models.film_multigrid import Multigrid
+    from camcontact.scenes.cam_follower import MIN_CHAIN, _chain_count
+
+    roller = cc.CamFollower(
+        cam=cc.Cam(program=MotionProgram.thesis_ls1(), base_radius="40 mm", width="15 mm", material=STEEL),
+        follower=cc.Follower.roller(radius="10 mm", offset="5 mm", material=STEEL), valve_train=cc.ValveTrain.ls1(),
+        speed="1000 rpm", angles=cc.Q_(np.arange(30.0, 30.0 + 2 * MIN_CHAIN), "deg"), lubricant=OIL)
+    films = {}
+    for threads in (1, 2):
+        model = Multigrid(levels=6, tolerance=1e-8, threads=threads)
+        assert _chain_count(model, 2 * MIN_CHAIN) == threads
+        result = cc.Analysis(roller, outputs=["h_min", "film_regime"], models={"film": model}).run()
+        assert all(text == "ok" for text in result["film_regime"])
+        films[threads] = np.asarray(result["h_min"], dtype=float)
+    np.testing.assert_allclose(films[2], films[1], rtol=1e-5)
+    assert _chain_count(Multigrid(threads=4), MIN_CHAIN + 1) == 1  # no arc shorter than MIN_CHAIN
+    with pytest.raises(cc.InputError, match="threads = 0"):
+        Multigrid(threads=0)
