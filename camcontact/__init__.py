@@ -9,7 +9,8 @@ use of a model family) and compiles no numba kernel.
 
 from . import registry
 from .analysis import Analysis, Result
-from .components import Body, Cam, CamFollower, Follower, LineContact, Lubricant, Material, ValveTrain
+from .components import (Body, Cam, CamFollower, Follower, LineContact, Lubricant, Material,
+                         SphericalRollerBearing, ValveTrain)
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
 
@@ -28,6 +29,7 @@ __all__ = [
     "Lubricant",
     "Material",
     "PluginLoadWarning",
+    "SphericalRollerBearing",
     "Q_",
     "Result",
     "UnknownModelError",

@@ -5,6 +5,7 @@ from .cam_follower import CamFollower
 from .line_contact import Body, LineContact
 from .lubricant import Lubricant, LubricantState
 from .material import Material
+from .spherical_roller_bearing import SphericalRollerBearing
 
 __all__ = ["Body", "Cam", "CamFollower", "Follower", "LineContact", "Lubricant", "LubricantState", "Material",
-           "ValveTrain"]
+           "SphericalRollerBearing", "ValveTrain"]

@@ -1,0 +1,166 @@
+"""Spherical roller bearing: catalogue geometry, ratings and the internal geometry of its contacts.
+
+A double-row self-aligning bearing: ``rows`` rows of ``rollers_per_row`` barrel rollers (diameter
+D_w, effective length l_we) on the pitch diameter d_m, contact angle ±alpha, radial internal
+clearance c_r. The rolling-direction radii of the roller–raceway line contacts follow from
+gamma = D_w cos(alpha) / d_m (Harris & Kotzalas 2007, ch. 2 and 7):
+
+    inner contact  R_x = (D_w / 2)(1 - gamma) (roller against a convex raceway)
+    outer contact  R_x = (D_w / 2)(1 + gamma) (roller against a concave raceway)
+
+The ratings C (dynamic) and C0 (static) and, if known, the fatigue load limit P_u come from the
+catalogue; :meth:`SphericalRollerBearing.load_distribution` distributes radial and axial loads
+over the rollers (:mod:`camcontact.contact.load_distribution`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from ..errors import InputError
+from ..units import ANGLE, Component, Quantity, in_range, non_negative, positive, quantity_field
+from .line_contact import _instance_of
+from .material import Material
+
+__all__ = ["SphericalRollerBearing"]
+
+
+def _count(lower: int, upper: int | None = None):
+    def _validate(instance, attribute, value):
+        ok = isinstance(value, int) and not isinstance(value, bool) and value >= lower
+        if ok and upper is not None:
+            ok = value <= upper
+        if not ok:
+            allowed = f"an integer {lower}..{upper}" if upper is not None else f"an integer >= {lower}"
+            raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}; allowed: {allowed}")
+
+    return _validate
+
+
+@attrs.frozen(kw_only=True)
+class SphericalRollerBearing(Component):
+    """A spherical roller bearing from catalogue data.
+
+    Parameters
+    ----------
+    designation : str
+        Catalogue designation (e.g. "24040 CC/W33").
+    bore, outer_diameter, width : Quantity or str
+        d, D, B [length].
+    rollers_per_row : int
+        Z (>= 3).
+    roller_diameter, roller_length : Quantity or str
+        D_w (largest diameter of the barrel roller) and the effective contact length l_we [length].
+    pitch_diameter : Quantity or str
+        d_m [length]; default (d + D)/2.
+    contact_angle : Quantity or str
+        alpha [angle], 0 < alpha < 45°.
+    C, C0 : Quantity or str
+        Basic dynamic and static load ratings [force].
+    fatigue_load_limit : Quantity or str, optional
+        P_u [force] (for a_ISO).
+    radial_clearance : Quantity or str
+        Radial internal clearance c_r [length] (default 0; negative = interference/preload).
+    rows : int
+        1 or 2 (default 2).
+    row_offset : Quantity or str
+        Azimuth offset between the rollers of the two rows [angle] (default 0: in line).
+    material : Material, optional
+        Rings and rollers (needed for Hertz contact and subsurface stresses).
+    roughness : Quantity or str, optional
+        RMS roughness of each surface [length] (composite = sqrt(2) times it).
+    name : str
+    """
+
+    name: str = "bearing"
+    designation: str = ""
+    bore: Quantity = quantity_field("[length]", validators=[positive("m")])
+    outer_diameter: Quantity = quantity_field("[length]", validators=[positive("m")])
+    width: Quantity = quantity_field("[length]", validators=[positive("m")])
+    rollers_per_row: int = attrs.field(validator=_count(3))
+    roller_diameter: Quantity = quantity_field("[length]", validators=[positive("m")])
+    roller_length: Quantity = quantity_field("[length]", validators=[positive("m")])
+    pitch_diameter: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    contact_angle: Quantity = quantity_field(
+        ANGLE, validators=[in_range(0.0, math.pi / 4, lower_inclusive=False, upper_inclusive=False, unit="rad")])
+    C: Quantity = quantity_field("[force]", validators=[positive("N")])
+    C0: Quantity = quantity_field("[force]", validators=[positive("N")])
+    fatigue_load_limit: Quantity = quantity_field("[force]", optional=True, validators=[positive("N")])
+    radial_clearance: Quantity = quantity_field("[length]", default="0 mm")
+    rows: int = attrs.field(default=2, validator=_count(1, 2))
+    row_offset: Quantity = quantity_field(ANGLE, default="0 deg")
+    material: Material | None = attrs.field(default=None, validator=attrs.validators.optional(_instance_of(Material)))
+    roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
+
+    def __attrs_post_init__(self) -> None:
+        si, where = self.si, f"SphericalRollerBearing {self.designation!r}"
+        d, D = si.bore, si.outer_diameter
+        if not d < D:
+            raise InputError(f"{where}: bore = {self.bore} must be smaller than outer_diameter = {self.outer_diameter}")
+        d_m = self.d_m
+        if not d < d_m < D:
+            raise InputError(f"{where}: pitch_diameter = {d_m * 1e3:.4g} mm must lie between the bore "
+                             f"({d * 1e3:.4g} mm) and the outer diameter ({D * 1e3:.4g} mm)")
+        if not si.roller_diameter < 0.5 * (D - d):
+            raise InputError(f"{where}: roller_diameter = {self.roller_diameter} must be smaller than the "
+                             f"section height (D - d)/2 = {0.5e3 * (D - d):.4g} mm")
+        if not si.roller_length <= si.width:
+            raise InputError(f"{where}: roller_length = {self.roller_length} exceeds the width {self.width}")
+        if self.rollers_per_row * si.roller_diameter >= math.pi * d_m:
+            raise InputError(f"{where}: {self.rollers_per_row} rollers of {self.roller_diameter} do not fit on the "
+                             f"pitch circle (pi d_m = {math.pi * d_m * 1e3:.4g} mm)")
+        if not si.C0 > 0 or not si.C > 0:
+            raise InputError(f"{where}: load ratings must be positive")
+
+    # ------------------------------------------------------------------ derived geometry (SI)
+    @property
+    def d_m(self) -> float:
+        """Pitch diameter [m] ((d + D)/2 unless given)."""
+        if self.pitch_diameter is not None:
+            return self.si.pitch_diameter
+        return 0.5 * (self.si.bore + self.si.outer_diameter)
+
+    @property
+    def gamma(self) -> float:
+        """gamma = D_w cos(alpha) / d_m."""
+        return self.si.roller_diameter * math.cos(self.si.contact_angle) / self.d_m
+
+    @property
+    def contact_radii(self) -> dict[str, float]:
+        """Reduced radii in the rolling direction [m] of the inner and outer line contacts
+        (1/R = 1/R_roller ± 1/R_race; the outer raceway is concave)."""
+        half = 0.5 * self.si.roller_diameter
+        return {"inner": half * (1.0 - self.gamma), "outer": half * (1.0 + self.gamma)}
+
+    @property
+    def stiffness(self) -> float:
+        """K_n [N/m^(10/9)] of one roller, inner and outer contact in series (Palmgren)."""
+        from ..contact.load_distribution import line_contact_stiffness
+
+        return line_contact_stiffness(self.si.roller_length)
+
+    @property
+    def roller_count(self) -> int:
+        return self.rows * self.rollers_per_row
+
+    @property
+    def axial_factor_limit(self) -> float:
+        """e = 1.5 tan(alpha) (ISO 281: radial roller bearings with alpha != 0)."""
+        return 1.5 * math.tan(self.si.contact_angle)
+
+    # ------------------------------------------------------------------ analysis helpers
+    def load_distribution(self, radial_load, axial_load="0 N"):
+        """Roller loads under F_r and F_a [force] (Quantities or strings) by
+        :func:`camcontact.contact.load_distribution.solve_load_distribution`."""
+        from ..contact.load_distribution import solve_load_distribution
+        from ..units import si_value, to_quantity
+
+        Fr = si_value(to_quantity(radial_load, "[force]", where="load_distribution(radial_load)"))
+        Fa = si_value(to_quantity(axial_load, "[force]", where="load_distribution(axial_load)"))
+        return solve_load_distribution(
+            Fr, Fa, rollers_per_row=self.rollers_per_row, contact_angle=self.si.contact_angle,
+            stiffness=self.stiffness, clearance=self.si.radial_clearance, rows=self.rows,
+            row_offset=self.si.row_offset,
+        )
