@@ -182,3 +182,58 @@ class FerrareseUeharaFriction(FrictionModel):
             "film_thickness_hutchings": float_or_array(h),
         }
 
+
+
+@builtin
+@attrs.frozen
+class Kelley(FrictionModel):
+    """Benedict–Kelley friction coefficient of a rolling–sliding EHL line contact (SI form).
+
+    .. math:: \\mu = 0.0127\\,\\log_{10}\\left[\\frac{C\\,F_n}{\\eta_0\\,l\\,|u_1 - u_2|\\,(u_1 + u_2)^2}\\right]
+
+    with C = 29.66e-3 (the code of Delabenetta 2021 App. D; its text prints 29.662e-3) for F_n
+    [N], eta0 [Pa*s], contact length l [m] and surface speeds u1, u2 [m/s] (Delabenetta 2021 Eq.
+    49, after Benedict & Kelley 1961; the thesis calls it "Kelly"). The coefficient is clipped at
+    0 where the logarithm's argument falls below 1 (very fast sliding or a light load); pure
+    rolling (u1 = u2) is outside the correlation: InputError.
+
+    Parameters
+    ----------
+    constant : float
+        C [m^2/s^2] (makes the argument dimensionless in SI); default 29.66e-3.
+
+    Inputs (``requires``): ``normal_force`` F_n [N] (>= 0), ``contact_length`` l [m], ``eta0``
+    [Pa*s], ``u1``, ``u2`` surface speeds [m/s]. Returns ``friction_coefficient`` [-],
+    ``friction_force`` mu F_n [N] and ``friction_power`` mu F_n |u1 - u2| [W].
+
+    References
+    ----------
+    Benedict, G.H. & Kelley, B.W. (1961) Instantaneous coefficients of gear tooth friction, ASLE
+    Trans. 4:59–70; Delabenetta (2021) Eq. 49 (reference §2.10), Table 8: mu = 0.037.
+    """
+
+    name = "kelley"
+    reference = "Benedict & Kelley (1961); Delabenetta (2021) Eq. 49, Table 8"
+    requires = ("normal_force", "contact_length", "eta0", "u1", "u2")
+    provides = ("friction_coefficient", "friction_force", "friction_power")
+
+    constant: float = number_field(default=29.66e-3, validators=[in_range(0.0, lower_inclusive=False)])
+
+    def evaluate(self, normal_force, contact_length, eta0, u1, u2):
+        """Coefficient [-], force [N] and power [W] for SI inputs (scalars or arrays)."""
+        F, l, eta = (np.asarray(v, dtype=float) for v in (normal_force, contact_length, eta0))
+        u1, u2 = np.asarray(u1, dtype=float), np.asarray(u2, dtype=float)
+        if not all(np.all(np.isfinite(v)) for v in (F, l, eta, u1, u2)):
+            raise InputError("friction model 'kelley': inputs must be finite (got NaN or inf)")
+        if np.any(F < 0) or np.any(l <= 0) or np.any(eta <= 0):
+            raise InputError(f"friction model 'kelley': normal_force = {F.min():.6g} N, contact_length = "
+                             f"{l.min():.6g} m, eta0 = {eta.min():.6g} Pa*s; allowed F >= 0, l > 0, eta0 > 0")
+        sliding = np.abs(u1 - u2)
+        if np.any(sliding == 0.0) or np.any(u1 + u2 == 0.0):
+            raise InputError("friction model 'kelley': the correlation needs sliding (u1 != u2) and rolling "
+                             f"(u1 + u2 != 0); got u1 = {u1}, u2 = {u2} m/s")
+        with np.errstate(divide="ignore"):
+            argument = self.constant * F / (eta * l * sliding * (u1 + u2) ** 2)
+            mu = np.where(argument > 1.0, 0.0127 * np.log10(np.where(argument > 0, argument, 1.0)), 0.0)
+        return {"friction_coefficient": float_or_array(mu), "friction_force": float_or_array(mu * F),
+                "friction_power": float_or_array(mu * F * sliding)}

@@ -121,3 +121,42 @@ def test_exact_grubin_exponents_and_phi_r_change_the_conclusion(chain):
     lam = lambda_ratio(chain["phi_t"] * chain["h0"], 0.23e-6, 0.23e-6)
     assert lam == pytest.approx(5.1810 / 2, abs=5e-5)
     assert lubrication_regime(lam) == "mixed" and lubrication_regime(5.1810) == "full film"
+
+
+def test_table8_friction_and_temperatures(chain):
+    """Table 8 (printed) and §4.2 (full precision): mu_Kelly = 0.03748 (0.037), T_F = 22.4234 °C
+    (22.42), T_max = T + T_F = 107.3234 °C (107.3), T_maxL = 130.51 °C (130.5). Effusivity of
+    AISI 52100 sqrt(7810 x 464 x 42.4) = 12395.6 (Table 6: 1.239e4).
+
+    The lubricant's maximum temperature needs eta at the mean Hertz pressure by Roelands: the
+    thesis's code writes it in log10 form with 4.2 (9.67/ln 10 = 4.19957, rounded), giving
+    eta_p = 638.30 Pa s (§4.2: 638.29); camcontact's Roelands law keeps 9.67 in the ln form and
+    gives 637.60 Pa s (-0.11 %), so T_maxL is 130.48 °C here against the thesis's 130.51 — the
+    printed 130.5 either way. As the reference notes (erratum 15), T_maxL is a temperature rise
+    above the surface that the thesis compares with the grease's absolute limit (120 °C); the
+    absolute mid-film maximum is T_max + T_maxL = 237.8 °C."""
+    import math
+
+    import camcontact as cc
+    from camcontact.contact.contact_temperature import couette_temperature_rise, flash_temperature
+
+    kelley = cc.registry.get("friction_models", "kelley")
+    mu = kelley({"normal_force": F_N, "contact_length": LENGTH, "eta0": chain["eta"], "u1": U1, "u2": U2})[
+        "friction_coefficient"]
+    assert mu == pytest.approx(0.03748, abs=5e-6) and round(mu, 3) == 0.037
+    steel = cc.Material(E="200 GPa", nu=0.3, density="7810 kg/m^3", specific_heat="464 J/(kg K)",
+                        thermal_conductivity="42.4 W/(m K)")
+    e = steel.thermal_effusivity()
+    assert e == pytest.approx(12395.6, abs=0.05)
+    T_F = flash_temperature(F_N / LENGTH, chain["E_red"], chain["R"], mu, U1, U2, e, e)
+    assert T_F == pytest.approx(22.4234, abs=5e-4) and round(T_F, 2) == 22.42
+    T_max = 84.9 + T_F
+    assert T_max == pytest.approx(107.3234, abs=5e-4) and round(T_max, 1) == 107.3
+    eta_p = chain["eta"] * Roelands().viscosity_ratio(chain["hertz"].p_mean, chain["eta"], chain["alpha"])
+    assert eta_p == pytest.approx(638.29, rel=2e-3)
+    beta = chain["law"].thermoviscous_coefficient(T_WORK)
+    assert beta == pytest.approx(0.03405, abs=5e-6)
+    rise = couette_temperature_rise(beta, abs(U1 - U2), eta_p, chain["k"])
+    assert rise == pytest.approx(130.51, abs=0.05) and round(rise, 1) == 130.5
+    assert T_max + rise == pytest.approx(237.8, abs=0.1)
+    assert math.isclose(rise - 120.0, 10.5, abs_tol=0.05)  # "T_sup exceeded by 10.5 °C" (§4.1)

@@ -126,3 +126,16 @@ def test_bearing_component_rejects_inconsistent_geometry(changes, match):
     arguments.update(changes)
     with pytest.raises(InputError, match=match):
         cc.SphericalRollerBearing(**arguments)
+
+
+def test_contact_temperature_inputs_are_checked():
+    from camcontact.contact.contact_temperature import couette_temperature_rise, flash_temperature
+
+    assert flash_temperature(2.4e5, 2.2e11, 0.0124, 0.04, 3.0, 3.0, 1.2e4, 1.2e4) == 0.0  # no sliding, no heat
+    assert couette_temperature_rise(0.03, 0.0, 600.0, 0.13) == 0.0
+    with pytest.raises(InputError, match="u1 = -1"):
+        flash_temperature(2.4e5, 2.2e11, 0.0124, 0.04, -1.0, 3.0, 1.2e4, 1.2e4)
+    with pytest.raises(InputError, match="effusivity2 = 0"):
+        flash_temperature(2.4e5, 2.2e11, 0.0124, 0.04, 1.0, 3.0, 1.2e4, 0.0)
+    with pytest.raises(InputError, match="beta = 0"):
+        couette_temperature_rise(0.0, 1.0, 600.0, 0.13)

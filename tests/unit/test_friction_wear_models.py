@@ -177,3 +177,23 @@ def test_registry_lookup_by_name():
         assert cls.reference and cls.summary()
     with pytest.raises(InputError, match="k_L = 5.0 is out of range"):
         registry.get("wear_models", "ferrarese_uehara", k_L=5)
+
+
+def test_kelley_friction_limits_and_bad_input():
+    """Benedict–Kelley: mu grows with log10 of the load; clipped at 0 when the argument of the
+    logarithm falls below 1; pure rolling or rest is outside the correlation (InputError)."""
+    import numpy as np
+
+    import camcontact as cc
+    from camcontact.errors import InputError
+
+    model = cc.registry.get("friction_models", "kelley")
+    state = {"normal_force": np.array([1e3, 1e4, 1e5]), "contact_length": 0.04, "eta0": 0.07, "u1": 4.7, "u2": 2.7}
+    mu = model(state)["friction_coefficient"]
+    assert np.allclose(np.diff(mu), 0.0127)  # a decade of load adds 0.0127
+    fast = model({**state, "normal_force": 1.0, "u1": 40.0})
+    assert fast["friction_coefficient"] == 0.0 and fast["friction_force"] == 0.0
+    with pytest.raises(InputError, match="sliding"):
+        model({**state, "u2": 4.7})
+    with pytest.raises(InputError, match="eta0"):
+        model({**state, "eta0": -1.0})
