@@ -9,7 +9,7 @@ use of a model family) and compiles no numba kernel.
 
 from . import registry
 from .analysis import Analysis, Result
-from .components import (Body, Cam, CamFollower, Follower, LineContact, Lubricant, Material,
+from .components import (Body, Cam, CamFollower, Follower, LineContact, LoadedBearing, Lubricant, Material,
                          SphericalRollerBearing, ValveTrain)
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
@@ -26,6 +26,7 @@ __all__ = [
     "Follower",
     "InputError",
     "LineContact",
+    "LoadedBearing",
     "Lubricant",
     "Material",
     "PluginLoadWarning",

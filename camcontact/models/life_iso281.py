@@ -1,6 +1,7 @@
 """Rating life of a radial roller bearing after ISO 281:2007: L10, a1, kappa, a_ISO, L_nm.
 
-* Basic rating life L10 = (C/P)^(10/3) [10^6 revolutions]; L10h = 10^6 L10 / (60 n) [h].
+* Basic rating life L10 = (C/P)^(10/3) [10^6 revolutions]; L10h = 10^6 L10 / (60 n) [h] (held in
+  seconds, SI, like every camcontact value; reports show hours).
 * Dynamic equivalent load of a radial roller bearing with contact angle alpha != 0 (spherical
   roller bearings): e = 1.5 tan(alpha); P = F_r + Y1 F_a for F_a/F_r <= e (Y1 = 0.45 cot alpha),
   P = 0.67 F_r + Y2 F_a otherwise (Y2 = 0.67 cot alpha); catalogue values of e, Y1, Y2 replace them
@@ -109,7 +110,7 @@ class ISO281(LifeModel):
     ``speed`` inner-ring speed [1/s] (revolutions per second), ``pitch_diameter`` d_m [m],
     ``viscosity`` kinematic viscosity of the (base) oil at the operating temperature [m^2/s],
     ``fatigue_load_limit`` C_u [N]. Returns ``L10`` and ``L_nm`` [revolutions], ``L10h`` and
-    ``L_nmh`` [h], ``a1``, ``nu1`` [m^2/s], ``kappa``, ``a_ISO``.
+    ``L_nmh`` [s] (operating time; reports show hours), ``a1``, ``nu1`` [m^2/s], ``kappa``, ``a_ISO``.
 
     Parameters
     ----------
@@ -141,5 +142,5 @@ class ISO281(LifeModel):
         a1 = reliability_factor(self.reliability)
         a_iso = a_iso_roller(kappa, self.contamination * fatigue_load_limit / P)
         L_nm = a1 * a_iso * L10
-        return {"L10": L10, "L10h": L10 / (3600.0 * speed), "a1": a1, "nu1": nu1, "kappa": kappa, "a_ISO": a_iso,
-                "L_nm": L_nm, "L_nmh": L_nm / (3600.0 * speed)}
+        return {"L10": L10, "L10h": L10 / speed, "a1": a1, "nu1": nu1, "kappa": kappa, "a_ISO": a_iso,
+                "L_nm": L_nm, "L_nmh": L_nm / speed}

@@ -1,0 +1,67 @@
+"""A bearing in service: the scene component of a bearing analysis.
+
+:class:`LoadedBearing` puts a :class:`~camcontact.components.SphericalRollerBearing` under its
+operating conditions — radial and axial load, ring speeds, lubricant and temperature, and the
+life requirements (reliability, contamination factor) — so that an
+:class:`~camcontact.analysis.Analysis` can distribute the load over the rollers, evaluate every
+roller–raceway contact and the rating life (see :mod:`camcontact.scenes.bearing`).
+"""
+
+from __future__ import annotations
+
+import attrs
+
+from ..units import (Component, Quantity, above_absolute_zero, in_range, non_negative, number_field,
+                     quantity_field)
+from .line_contact import _instance_of
+from .lubricant import Lubricant
+from .spherical_roller_bearing import SphericalRollerBearing
+
+__all__ = ["LoadedBearing"]
+
+
+@attrs.frozen(kw_only=True)
+class LoadedBearing(Component):
+    """A spherical roller bearing under load, speed and lubrication.
+
+    Parameters
+    ----------
+    bearing : SphericalRollerBearing
+    radial_load : Quantity or str
+        F_r [force] (>= 0; defines azimuth 0).
+    axial_load : Quantity or str
+        F_a [force] (positive: carried by the first row); default 0.
+    speed : Quantity or str
+        Inner-ring speed [1/time] (e.g. "300 rpm").
+    outer_speed : Quantity or str
+        Outer-ring speed [1/time]; default 0 (a rotating outer ring, e.g. a pellet-mill roller
+        shell on a fixed shaft, is speed 0 and outer_speed > 0).
+    lubricant : Lubricant, optional
+        Needed for films, Lambda and the modified life (its kinematic viscosity at ``temperature``).
+    temperature : Quantity or str, optional
+        Operating temperature of the lubricant [temperature].
+    reliability : float
+        Required reliability [%] for L_nm (90..99.95; default 90).
+    contamination : float, optional
+        ISO 281 contamination factor e_C (0 < e_C <= 1) for a_ISO; no default (it is a judgement
+        on the application's cleanliness).
+    name : str
+    """
+
+    name: str = "bearing"
+    bearing: SphericalRollerBearing = attrs.field(validator=_instance_of(SphericalRollerBearing))
+    radial_load: Quantity = quantity_field("[force]", validators=[non_negative("N")])
+    axial_load: Quantity = quantity_field("[force]", default="0 N")
+    speed: Quantity = quantity_field("1/[time]", default="0 rpm")
+    outer_speed: Quantity = quantity_field("1/[time]", default="0 rpm")
+    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(_instance_of(Lubricant)))
+    temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
+    reliability: float = number_field(default=90.0, validators=[in_range(90.0, 99.95)])
+    contamination: float = number_field(optional=True, validators=[in_range(0.0, 1.0, lower_inclusive=False)])
+
+    @property
+    def relative_speed(self) -> float:
+        """|n_inner - n_outer| [rev/s]."""
+        import math
+
+        return abs(self.si.speed - self.si.outer_speed) / (2.0 * math.pi)

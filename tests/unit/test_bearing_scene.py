@@ -1,0 +1,115 @@
+"""The bearing scene (LoadedBearing): steps on demand, per-roller reports, kinematics, bad input."""
+
+import math
+
+import numpy as np
+import pytest
+
+import camcontact as cc
+from camcontact.errors import InputError
+
+STEEL = cc.Material(E="210 GPa", nu=0.3)
+OIL = cc.Lubricant(name="mineral base oil", nu40="575 mm^2/s", nu100="50 mm^2/s", density="920 kg/m^3",
+                   alpha="2.0e-8 1/Pa")
+
+
+def bearing(**changes):
+    arguments = dict(designation="test", bore="200 mm", outer_diameter="310 mm", width="109 mm", rollers_per_row=25,
+                     roller_diameter="27 mm", roller_length="41.35 mm", contact_angle="9 deg", C="1700 kN",
+                     C0="2120 kN", radial_clearance="0.1 mm", fatigue_load_limit="200 kN", material=STEEL,
+                     roughness="0.23 um")
+    arguments.update(changes)
+    return cc.SphericalRollerBearing(**arguments)
+
+
+def scene(**changes):
+    arguments = dict(bearing=bearing(), radial_load="150 kN", axial_load="10 kN", outer_speed="300 rpm",
+                     lubricant=OIL, temperature="85 degC", contamination=0.5)
+    arguments.update(changes)
+    return cc.LoadedBearing(**arguments)
+
+
+def test_only_the_needed_steps_run():
+    analysis = cc.Analysis(scene(), outputs=["Q_max"])
+    assert analysis.steps() == ["load_distribution"]
+    assert cc.Analysis(scene(), outputs=["L10h"]).steps() == ["equivalent_load", "rating_life"]
+    result = cc.Analysis(scene(), outputs=["Q_max", "L10h"]).run()
+    assert {r.step for r in result.records} == {"load_distribution", "equivalent_load", "rating_life"}
+
+
+def test_full_report_per_roller_and_summary():
+    result = cc.Analysis(scene()).run()
+    frame = result.to_frame()
+    assert len(frame) == 50 and "Q [kN]" in frame and "contact_regime" in frame
+    Q = np.asarray(result["Q"])
+    unloaded = Q == 0.0
+    assert unloaded.any() and (~unloaded).any()
+    regimes = np.asarray(result["contact_regime"])
+    assert set(regimes[unloaded]) == {"unloaded"} and "unloaded" not in set(regimes[~unloaded])
+    assert np.all(np.isnan(np.asarray(result["h_min_inner"])[unloaded]))
+    assert np.all(np.isfinite(np.asarray(result["h_min_inner"])[~unloaded]))
+    summary = result.summary_frame()
+    assert summary["L_nmh [h]"].iloc[0] > summary["L10h [h]"].iloc[0] > 0  # a_ISO > 1 for this clean, thick-film case
+    # the roller loads balance the applied load (radial and axial components)
+    alpha = math.radians(9)
+    rows = np.asarray(result["roller_row"])
+    azimuth = np.asarray(result["azimuth"])
+    assert np.sum(Q * np.cos(azimuth)) * math.cos(alpha) == pytest.approx(150e3, rel=1e-9)
+    assert np.sum(Q * np.where(rows == 1, 1.0, -1.0)) * math.sin(alpha) == pytest.approx(10e3, rel=1e-9)
+
+
+def test_pure_rolling_kinematics():
+    """Outer ring at 300 rpm, inner fixed: cage at 150 (1 + gamma) rpm, u_m = (pi d_m/2)(1 - gamma^2) n."""
+    result = cc.Analysis(scene(), outputs=["cage_speed", "roller_speed", "u_m"]).run()
+    gamma = 0.027 * math.cos(math.radians(9)) / 0.255
+    assert result["cage_speed"] * 30 / math.pi == pytest.approx(150 * (1 + gamma))
+    assert result["u_m"] == pytest.approx(0.5 * math.pi * 0.255 * (1 - gamma**2) * 5.0)
+    # the roller surface moves with the raceways: pi D_w n_R = u_m
+    assert 0.5 * 0.027 * result["roller_speed"] == pytest.approx(result["u_m"])
+
+
+@pytest.mark.parametrize("changes", [dict(radial_load="0 kN", axial_load="80 kN"), dict(radial_load="0 kN"),
+                                     dict(bearing=bearing(radial_clearance="1 mm"), radial_load="2 kN")])
+def test_hard_load_cases_stay_finite_and_flagged(changes):
+    """Pure axial load, no load at all, a clearance much larger than the elastic approach."""
+    result = cc.Analysis(scene(**changes), outputs=["Q", "p_h_inner", "h_min_inner", "contact_regime", "L10h",
+                                                    "force_residual"]).run()
+    Q = np.asarray(result["Q"])
+    assert np.all(np.isfinite(Q)) and result["force_residual"] < 1e-5
+    regimes = np.asarray(result["contact_regime"])
+    assert np.all((regimes == "unloaded") == (Q == 0.0))
+    assert np.all(np.isfinite(np.asarray(result["h_min_inner"])[Q > 0]))
+    assert result["L10h"] > 0
+
+
+def test_missing_and_bad_inputs_are_named():
+    with pytest.raises(InputError, match="contamination"):
+        cc.Analysis(scene(contamination=None), outputs=["L_nm"])
+    with pytest.raises(InputError, match="fatigue_load_limit"):
+        cc.Analysis(scene(bearing=bearing(fatigue_load_limit=None)), outputs=["L_nm"])
+    no_density = cc.Lubricant(name="grease without base-oil data", eta0="0.07 Pa*s", alpha="2e-8 1/Pa")
+    with pytest.raises(InputError, match="kinematic viscosity"):
+        cc.Analysis(scene(lubricant=no_density), outputs=["kappa"]).run()
+    with pytest.raises(InputError, match="no entrainment"):
+        cc.Analysis(scene(speed="300 rpm"), outputs=["h_min_bearing"]).run()
+    with pytest.raises(InputError, match="unknown model slots"):
+        cc.Analysis(scene(), models={"friction": "kelley"})
+
+
+def test_numerical_film_in_the_bearing_scene():
+    from camcontact.models.film_multigrid import Multigrid
+
+    result = cc.Analysis(scene(radial_load="60 kN"), outputs=["h_min_inner", "h_min_outer", "Q"],
+                         models={"film": [Multigrid(levels=5), "pan_hamrock"]}).run()
+    numeric, formula = (np.asarray(v) for v in result["h_min_inner"])
+    loaded = np.asarray(result["Q"][0]) > 0
+    assert np.allclose(numeric[loaded], formula[loaded], rtol=0.25)
+
+
+def test_bearing_plot(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    figure = cc.Analysis(scene()).run().plot()
+    figure.savefig(tmp_path / "bearing.png")
+    assert len(figure.axes) == 3
