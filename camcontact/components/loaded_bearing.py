@@ -58,10 +58,3 @@ class LoadedBearing(Component):
     temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
     reliability: float = number_field(default=90.0, validators=[in_range(90.0, 99.95)])
     contamination: float = number_field(optional=True, validators=[in_range(0.0, 1.0, lower_inclusive=False)])
-
-    @property
-    def relative_speed(self) -> float:
-        """|n_inner - n_outer| [rev/s]."""
-        import math
-
-        return abs(self.si.speed - self.si.outer_speed) / (2.0 * math.pi)

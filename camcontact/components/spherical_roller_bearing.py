@@ -111,8 +111,6 @@ class SphericalRollerBearing(Component):
         if self.rollers_per_row * si.roller_diameter >= math.pi * d_m:
             raise InputError(f"{where}: {self.rollers_per_row} rollers of {self.roller_diameter} do not fit on the "
                              f"pitch circle (pi d_m = {math.pi * d_m * 1e3:.4g} mm)")
-        if not si.C0 > 0 or not si.C > 0:
-            raise InputError(f"{where}: load ratings must be positive")
 
     # ------------------------------------------------------------------ derived geometry (SI)
     @property
@@ -145,22 +143,22 @@ class SphericalRollerBearing(Component):
     def roller_count(self) -> int:
         return self.rows * self.rollers_per_row
 
-    @property
-    def axial_factor_limit(self) -> float:
-        """e = 1.5 tan(alpha) (ISO 281: radial roller bearings with alpha != 0)."""
-        return 1.5 * math.tan(self.si.contact_angle)
-
     # ------------------------------------------------------------------ analysis helpers
     def load_distribution(self, radial_load, axial_load="0 N"):
         """Roller loads under F_r and F_a [force] (Quantities or strings) by
         :func:`camcontact.contact.load_distribution.solve_load_distribution`."""
-        from ..contact.load_distribution import solve_load_distribution
         from ..units import si_value, to_quantity
 
         Fr = si_value(to_quantity(radial_load, "[force]", where="load_distribution(radial_load)"))
         Fa = si_value(to_quantity(axial_load, "[force]", where="load_distribution(axial_load)"))
+        return self.load_distribution_si(Fr, Fa)
+
+    def load_distribution_si(self, radial_load: float, axial_load: float = 0.0):
+        """:meth:`load_distribution` for SI forces [N] (the scenes' entry)."""
+        from ..contact.load_distribution import solve_load_distribution
+
         return solve_load_distribution(
-            Fr, Fa, rollers_per_row=self.rollers_per_row, contact_angle=self.si.contact_angle,
+            radial_load, axial_load, rollers_per_row=self.rollers_per_row, contact_angle=self.si.contact_angle,
             stiffness=self.stiffness, clearance=self.si.radial_clearance, rows=self.rows,
             row_offset=self.si.row_offset,
         )

@@ -143,7 +143,7 @@ class _Solver:
             if t is not None:
                 self.c1s[k, : t[0].shape[0], : t[0].shape[1]] = t[0]
                 self.c2s[k, : t[1].shape[0], : t[1].shape[1]] = t[1]
-        solve_levels = max(s.cycle_coarsest, 1)
+        solve_levels = min(max(s.cycle_coarsest, 1), len(levels))
         size = int(self.n_of[solve_levels - 1])
         self.K_dense = np.zeros((solve_levels, size, size))
         for k in range(min(solve_levels, len(levels))):

@@ -106,7 +106,7 @@ def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: f
         inputs["contamination"] = scene.contamination
 
     def run_distribution(s):
-        result = bearing.load_distribution(f"{s['radial_load']!r} N", f"{s['axial_load']!r} N")
+        result = bearing.load_distribution_si(s["radial_load"], s["axial_load"])
         rows, Z = result.Q.shape
         return {
             "roller_row": np.repeat(np.arange(1.0, rows + 1), Z), "azimuth": result.azimuths.ravel(),

@@ -33,7 +33,7 @@ from ..contact.roughness import lambda_ratio
 from ..dynamics.prescribed_motion import contact_force, minimum_stiffness
 from ..ehl.groups import hamrock_line, moes_line
 from ..errors import InputError, ValidityWarning
-from ..kinematics.follower import follower_kinematics, sign_changes, undercut_angles
+from ..kinematics.follower import follower_kinematics, undercut_angles
 from ..models.film_line import LINE_INPUTS
 from .line_contact import _film_model, lubricant_step
 
@@ -231,9 +231,6 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
         pick = (lambda attr: np.array([getattr(sol, attr) if sol is not None else 0.0 for sol in solutions]))
         return {"H0": pick("H0"), "H_min": pick("H_min"), "H_c": pick("H_c"),
                 "spike_pressure": np.array([sol.spike[0] if sol is not None else 0.0 for sol in solutions])}
-
-    friction_spec = models["friction"]
-    wear_spec = models["wear"]
 
     def model_state(s):
         return {**s, **{alias: s[name] for alias, name in _ALIASES.items()}}
