@@ -10,7 +10,7 @@ use of a model family) and compiles no numba kernel.
 from . import registry
 from .analysis import Analysis, Result
 from .components import (Body, Cam, CamFollower, Follower, LineContact, LoadedBearing, Lubricant, Material,
-                         SphericalRollerBearing, ValveTrain)
+                         RacewayContact, SphericalRollerBearing, ValveTrain)
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
 
@@ -30,6 +30,7 @@ __all__ = [
     "Lubricant",
     "Material",
     "PluginLoadWarning",
+    "RacewayContact",
     "SphericalRollerBearing",
     "Q_",
     "Result",

@@ -29,7 +29,13 @@ reported with the keys that are allowed. Layout::
 
 A ``cam_follower`` scene's [contact] table holds :class:`~camcontact.components.CamFollower`
 fields, with nested [contact.cam] (its ``program`` a table of ``segments``), [contact.follower],
-[contact.valve_train] and [contact.lubricant] tables.
+[contact.valve_train] and [contact.lubricant] tables. A ``raceway_contact`` scene's [contact] holds
+:class:`~camcontact.components.RacewayContact` fields with [contact.raceway_material],
+[contact.roller_material] and [contact.lubricant]; its [models] ``convention = ["thesis",
+"corrected"]`` runs both side by side. A ``bearing`` scene's [contact] holds
+:class:`~camcontact.components.LoadedBearing` fields with [contact.bearing] (a
+:class:`~camcontact.components.SphericalRollerBearing`, its [contact.bearing.material]) and
+[contact.lubricant].
 """
 
 from __future__ import annotations
@@ -43,7 +49,8 @@ from typing import Any
 import attrs
 
 from .analysis import Analysis
-from .components import Body, Cam, CamFollower, Follower, LineContact, Lubricant, Material, ValveTrain
+from .components import (Body, Cam, CamFollower, Follower, LineContact, LoadedBearing, Lubricant, Material,
+                         RacewayContact, SphericalRollerBearing, ValveTrain)
 from .errors import InputError
 
 __all__ = ["DEFAULT_SCENE", "Scene", "default_scene_text", "load_scene", "parse_scene"]
@@ -61,7 +68,8 @@ def _motion_program(table: Any, where: str) -> Any:
 
 
 #: scene kind -> component class of the [contact] table (the scene component)
-_KINDS = {"line_contact": LineContact, "cam_follower": CamFollower}
+_KINDS = {"line_contact": LineContact, "cam_follower": CamFollower, "raceway_contact": RacewayContact,
+          "bearing": LoadedBearing}
 #: nested tables: component class -> {field: component class, or a builder(table, where)}
 _NESTED: dict[type, dict[str, Any]] = {
     LineContact: {"body1": Body, "body2": Body, "lubricant": Lubricant},
@@ -69,6 +77,9 @@ _NESTED: dict[type, dict[str, Any]] = {
     CamFollower: {"cam": Cam, "follower": Follower, "valve_train": ValveTrain, "lubricant": Lubricant},
     Cam: {"material": Material, "program": _motion_program},
     Follower: {"material": Material},
+    RacewayContact: {"raceway_material": Material, "roller_material": Material, "lubricant": Lubricant},
+    LoadedBearing: {"bearing": SphericalRollerBearing, "lubricant": Lubricant},
+    SphericalRollerBearing: {"material": Material},
 }
 _TOP_KEYS = {"scene", "name", "outputs", "effects", "models", "report", "contact"}
 

@@ -38,6 +38,7 @@ __all__ = [
     "in_range",
     "non_negative",
     "number_field",
+    "one_of",
     "parse_quantity",
     "positive",
     "quantity_field",
@@ -284,6 +285,16 @@ def non_negative(unit: str = ""):
 def above_absolute_zero():
     """attrs validator: a temperature above 0 K."""
     return in_range(0.0, lower_inclusive=False, unit="K")
+
+
+def one_of(*choices: Any):
+    """attrs validator: the value is one of ``choices`` (InputError naming field, value, choices)."""
+
+    def _validate(instance, attribute, value):
+        if value not in choices:
+            raise InputError(f"{_name(instance, attribute)} = {value!r}; allowed: {', '.join(map(repr, choices))}")
+
+    return _validate
 
 
 # ---------------------------------------------------------------- attrs field helpers

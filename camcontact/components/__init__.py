@@ -6,7 +6,8 @@ from .line_contact import Body, LineContact
 from .loaded_bearing import LoadedBearing
 from .lubricant import Lubricant, LubricantState
 from .material import Material
+from .raceway_contact import RacewayContact
 from .spherical_roller_bearing import SphericalRollerBearing
 
 __all__ = ["Body", "Cam", "CamFollower", "Follower", "LineContact", "LoadedBearing", "Lubricant", "LubricantState", "Material",
-           "SphericalRollerBearing", "ValveTrain"]
+           "RacewayContact", "SphericalRollerBearing", "ValveTrain"]

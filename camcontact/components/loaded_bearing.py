@@ -45,6 +45,9 @@ class LoadedBearing(Component):
     contamination : float, optional
         ISO 281 contamination factor e_C (0 < e_C <= 1) for a_ISO; no default (it is a judgement
         on the application's cleanliness).
+    slide_roll_ratio : float, optional
+        (u_ring - u_roller)/u_m at every raceway contact (0 < s < 2) for the Kelley friction and the
+        flash temperature; pure rolling (no value) has no sliding friction in that correlation.
     name : str
     """
 
@@ -58,3 +61,5 @@ class LoadedBearing(Component):
     temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
     reliability: float = number_field(default=90.0, validators=[in_range(90.0, 99.95)])
     contamination: float = number_field(optional=True, validators=[in_range(0.0, 1.0, lower_inclusive=False)])
+    slide_roll_ratio: float = number_field(optional=True, validators=[in_range(0.0, 2.0, lower_inclusive=False,
+                                                                                upper_inclusive=False)])

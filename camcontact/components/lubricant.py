@@ -43,6 +43,7 @@ from ..units import (
     in_range,
     non_negative,
     number_field,
+    one_of,
     positive,
     quantity_field,
     si_value,
@@ -166,6 +167,13 @@ class Lubricant(Component):
         [W/(m K)], needed by the ``thermal`` effect.
     specific_heat : Quantity or str, optional
         [J/(kg K)].
+    form : str
+        ``"oil"`` (default) or ``"grease"``: a grease is described by its base oil's data; the
+        form sets the starvation factor of the corrected film (0.7 for grease, Delabenetta 2021
+        App. D comment) where a scene uses one.
+    upper_temperature : Quantity or str, optional
+        Upper service temperature from the data sheet (e.g. ``"120 degC"``), checked by the
+        scenes that predict lubricant temperatures.
 
     Examples
     --------
@@ -208,6 +216,8 @@ class Lubricant(Component):
     specific_heat: Quantity = quantity_field(
         "[energy]/[mass]/[temperature]", optional=True, validators=[positive("J/(kg K)")]
     )
+    form: str = attrs.field(default="oil", validator=one_of("oil", "grease"))
+    upper_temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
 
     # ------------------------------------------------------------------ validation
     def __attrs_post_init__(self) -> None:

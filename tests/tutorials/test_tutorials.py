@@ -1,6 +1,5 @@
 """Every tutorial script runs (in a temporary folder, headless)."""
 
-import os
 import runpy
 from pathlib import Path
 

@@ -96,6 +96,31 @@ def test_missing_and_bad_inputs_are_named():
         cc.Analysis(scene(), models={"friction": "kelley"})
 
 
+def test_kelley_friction_and_flash_temperature_per_contact():
+    """Each loaded contact gets the Kelley mu of its own roller load (Delabenetta Eq. 49 evaluated by
+    hand here) and a flash temperature; unloaded rollers have none; the friction power is
+    sum(mu Q |u1 - u2|) over both raceways. Without a slide/roll ratio the step cannot run (named)."""
+    thermal_steel = cc.Material(E="210 GPa", nu=0.3, density="7810 kg/m^3", specific_heat="464 J/(kg K)",
+                                thermal_conductivity="42.4 W/(m K)")
+    case = scene(bearing=bearing(material=thermal_steel), slide_roll_ratio=0.05)
+    result = cc.Analysis(case, outputs=["Q", "u_m", "eta0", "friction_coefficient_inner", "friction_coefficient_outer",
+                                        "flash_temperature_inner", "friction_power"]).run()
+    Q, u_m, eta = np.asarray(result["Q"]), result["u_m"], result["eta0"]
+    u1, u2 = u_m * 1.025, u_m * 0.975
+    loaded = Q > 0
+    expected = 0.0127 * np.log10(29.66e-3 * Q[loaded] / (eta * 41.35e-3 * (u1 - u2) * (u1 + u2) ** 2))
+    mu = np.asarray(result["friction_coefficient_inner"])
+    assert mu[loaded] == pytest.approx(expected, rel=1e-12)
+    assert np.all(np.isnan(mu[~loaded])) and np.all(np.isnan(np.asarray(result["flash_temperature_inner"])[~loaded]))
+    assert np.all(np.asarray(result["flash_temperature_inner"])[loaded] > 0)
+    power = 2 * np.sum(expected * Q[loaded]) * (u1 - u2)  # the same mu at both raceways (same Q, l, speeds)
+    assert result["friction_power"] == pytest.approx(power, rel=1e-12)
+    with pytest.raises(InputError, match="slide_roll_ratio: set LoadedBearing.slide_roll_ratio"):
+        cc.Analysis(scene(), outputs=["friction_power"])
+    with pytest.raises(InputError, match="effusivity"):
+        cc.Analysis(scene(slide_roll_ratio=0.05), outputs=["flash_temperature_outer"])
+
+
 def test_numerical_film_in_the_bearing_scene():
     from camcontact.models.film_multigrid import Multigrid
 

@@ -10,7 +10,6 @@ import textwrap
 
 import pytest
 
-import camcontact as cc
 from camcontact import registry
 from camcontact.errors import PluginLoadWarning, PluginNameClashWarning, UnknownModelError
 from camcontact.models.base import FilmModel

@@ -120,3 +120,38 @@ def test_cam_scene_file_errors_name_the_key():
     text = default_scene_text().replace('base_radius = "40 mm"', 'base_radius = "40 mm"\nradius = 3')
     with pytest.raises(InputError, match=r"\[contact\]\.cam: unknown keys \['radius'\]"):
         parse_scene(text)
+
+
+TUTORIALS = Path(__file__).parents[2] / "tutorials"
+
+
+def test_raceway_contact_scene_file_runs_both_conventions(tmp_path, capsys):
+    """The pellet-mill contact file: thesis and corrected rows; the thesis row gives Table 8's
+    Lambda = 5.181 and T_maxL = 130.5 °C (Delabenetta 2021), the corrected row Lambda about 2."""
+    csv = tmp_path / "raceway.csv"
+    assert main(["run", str(TUTORIALS / "pellet_mill_raceway_contact.toml"), "--csv", str(csv)]) == 0
+    frame = pd.read_csv(csv)
+    assert list(frame["variant"]) == ["thesis", "corrected"]
+    assert round(frame["Lambda_oc [-]"][0], 3) == 5.181
+    assert round(frame["lubricant_temperature_max [°C]"][0], 1) == 130.5
+    assert frame["h_c [µm]"][0] == pytest.approx(1.369, abs=5e-4)  # report units from the file
+    assert 1.5 < frame["Lambda_oc [-]"][1] < 2.5 and frame["regime"][1] == "mixed"
+
+
+def test_bearing_scene_file_runs(tmp_path, capsys):
+    csv = tmp_path / "bearing.csv"
+    assert main(["run", str(TUTORIALS / "pellet_mill_bearing.toml"), "--csv", str(csv)]) == 0
+    frame = pd.read_csv(csv)
+    assert len(frame) == 50 and "Q [kN]" in frame
+    summary = pd.read_csv(tmp_path / "bearing_summary.csv")
+    assert summary["Q_max [kN]"][0] == pytest.approx(10.0, rel=0.02)  # the load was chosen for it
+    assert summary["L_nmh [h]"][0] > 0
+
+
+def test_bearing_and_raceway_scene_errors_name_the_key():
+    text = (TUTORIALS / "pellet_mill_bearing.toml").read_text(encoding="utf-8")
+    with pytest.raises(InputError, match=r"\[contact\]\.bearing: unknown keys \['osculation'\]"):
+        parse_scene(text.replace('roughness = "0.23 um"', 'roughness = "0.23 um"\nosculation = 0.97'))
+    text = (TUTORIALS / "pellet_mill_raceway_contact.toml").read_text(encoding="utf-8")
+    with pytest.raises(InputError, match="RacewayContact.raceway = 'left'"):
+        parse_scene(text.replace('raceway = "outer"', 'raceway = "left"'))
