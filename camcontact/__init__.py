@@ -9,8 +9,8 @@ use of a model family) and compiles no numba kernel.
 
 from . import registry
 from .analysis import Analysis, Result
-from .components import (Body, Cam, CamFollower, Follower, LineContact, LoadedBearing, Lubricant, Material,
-                         RacewayContact, SphericalRollerBearing, ValveTrain)
+from .components import (BallConeCVT, Body, Cam, CamFollower, Follower, LineContact, LoadedBallConeCVT, LoadedBearing,
+                         Lubricant, Material, RacewayContact, SphericalRollerBearing, ValveTrain)
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
 
@@ -18,6 +18,7 @@ __version__ = "0.1.0"
 
 __all__ = [
     "Analysis",
+    "BallConeCVT",
     "Body",
     "Cam",
     "CamFollower",
@@ -26,6 +27,7 @@ __all__ = [
     "Follower",
     "InputError",
     "LineContact",
+    "LoadedBallConeCVT",
     "LoadedBearing",
     "Lubricant",
     "Material",

@@ -40,7 +40,7 @@ import attrs
 from .errors import InputError
 from .quantities import QUANTITIES
 
-__all__ = ["EFFECTS", "Analysis", "Result", "SceneGraph", "Step", "StepRecord"]
+__all__ = ["EFFECTS", "Analysis", "Result", "SceneGraph", "Step", "StepRecord", "checked_request"]
 
 #: Physical effects a scene may switch on (each scene supports a subset).
 EFFECTS = ("elasticity", "piezoviscosity", "compressibility", "thermal", "dynamics", "squeeze", "spin")
@@ -105,6 +105,22 @@ def scene_builder(component_type: type):
         return function
 
     return _register
+
+
+def checked_request(kind: str, models: Mapping[str, Any], effects: Iterable[str] | None, *, slots: Iterable[str],
+                    supported: Iterable[str], default: Iterable[str]) -> frozenset:
+    """What a scene builder was asked, checked: the effects in force (``default`` when none were
+    asked); an effect the scene does not support or a model slot it does not have is an InputError."""
+    supported = frozenset(supported)
+    effects = frozenset(default) if effects is None else frozenset(effects)
+    unsupported = sorted(effects - supported)
+    if unsupported:
+        raise InputError(f"effects {unsupported} do not apply to a {kind} scene; it supports {sorted(supported)}")
+    slots = tuple(slots)
+    unknown = sorted(set(models) - set(slots))
+    if unknown:
+        raise InputError(f"{kind} scene: unknown model slots {unknown}; slots are {', '.join(map(repr, slots))}")
+    return effects
 
 
 def _builder_for(scene: Any) -> Callable[..., SceneGraph]:

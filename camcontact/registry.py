@@ -54,8 +54,8 @@ BUILTIN_MODULES: dict[str, tuple[str, ...]] = {
     "film_models": ("camcontact.models.film_line", "camcontact.models.film_point", "camcontact.models.film_multigrid"),
     "friction_models": ("camcontact.models.friction",),
     "wear_models": ("camcontact.models.wear",),
-    "life_models": ("camcontact.models.life_iso281",),
-    "traction_models": (),
+    "life_models": ("camcontact.models.life_iso281", "camcontact.models.life_lundberg_palmgren"),
+    "traction_models": ("camcontact.models.traction",),
 }
 
 

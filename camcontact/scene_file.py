@@ -35,7 +35,9 @@ fields, with nested [contact.cam] (its ``program`` a table of ``segments``), [co
 "corrected"]`` runs both side by side. A ``bearing`` scene's [contact] holds
 :class:`~camcontact.components.LoadedBearing` fields with [contact.bearing] (a
 :class:`~camcontact.components.SphericalRollerBearing`, its [contact.bearing.material]) and
-[contact.lubricant].
+[contact.lubricant]. A ``ball_cone_cvt`` scene's [contact] holds
+:class:`~camcontact.components.LoadedBallConeCVT` fields with [contact.cvt] (a
+:class:`~camcontact.components.BallConeCVT`, its [contact.cvt.material] and [contact.cvt.lubricant]).
 """
 
 from __future__ import annotations
@@ -49,8 +51,8 @@ from typing import Any
 import attrs
 
 from .analysis import Analysis
-from .components import (Body, Cam, CamFollower, Follower, LineContact, LoadedBearing, Lubricant, Material,
-                         RacewayContact, SphericalRollerBearing, ValveTrain)
+from .components import (BallConeCVT, Body, Cam, CamFollower, Follower, LineContact, LoadedBallConeCVT, LoadedBearing,
+                         Lubricant, Material, RacewayContact, SphericalRollerBearing, ValveTrain)
 from .errors import InputError
 
 __all__ = ["DEFAULT_SCENE", "Scene", "default_scene_text", "load_scene", "parse_scene"]
@@ -69,7 +71,7 @@ def _motion_program(table: Any, where: str) -> Any:
 
 #: scene kind -> component class of the [contact] table (the scene component)
 _KINDS = {"line_contact": LineContact, "cam_follower": CamFollower, "raceway_contact": RacewayContact,
-          "bearing": LoadedBearing}
+          "bearing": LoadedBearing, "ball_cone_cvt": LoadedBallConeCVT}
 #: nested tables: component class -> {field: component class, or a builder(table, where)}
 _NESTED: dict[type, dict[str, Any]] = {
     LineContact: {"body1": Body, "body2": Body, "lubricant": Lubricant},
@@ -80,6 +82,8 @@ _NESTED: dict[type, dict[str, Any]] = {
     RacewayContact: {"raceway_material": Material, "roller_material": Material, "lubricant": Lubricant},
     LoadedBearing: {"bearing": SphericalRollerBearing, "lubricant": Lubricant},
     SphericalRollerBearing: {"material": Material},
+    LoadedBallConeCVT: {"cvt": BallConeCVT},
+    BallConeCVT: {"material": Material, "lubricant": Lubricant},
 }
 _TOP_KEYS = {"scene", "name", "outputs", "effects", "models", "report", "contact"}
 

@@ -1,5 +1,6 @@
 """Components: attrs classes with pint-typed fields, validated at construction."""
 
+from .ball_cone_cvt import BallConeCVT, LoadedBallConeCVT
 from .cam import Cam, Follower, ValveTrain
 from .cam_follower import CamFollower
 from .line_contact import Body, LineContact
@@ -9,5 +10,5 @@ from .material import Material
 from .raceway_contact import RacewayContact
 from .spherical_roller_bearing import SphericalRollerBearing
 
-__all__ = ["Body", "Cam", "CamFollower", "Follower", "LineContact", "LoadedBearing", "Lubricant", "LubricantState", "Material",
-           "RacewayContact", "SphericalRollerBearing", "ValveTrain"]
+__all__ = ["BallConeCVT", "Body", "Cam", "CamFollower", "Follower", "LineContact", "LoadedBallConeCVT", "LoadedBearing",
+           "Lubricant", "LubricantState", "Material", "RacewayContact", "SphericalRollerBearing", "ValveTrain"]

@@ -15,6 +15,8 @@ import math
 import numpy as np
 from numba.extending import register_jitable
 
+from ..jit import compile_kernel
+
 __all__ = ["PY", "compiled"]
 
 #: 6th-order interpolation weights from coarse points J0-2..J0+3 to the midpoint of J0, J0+1
@@ -436,18 +438,8 @@ PY = {
     "mlmi_interpolate_correct": mlmi_interpolate_correct,
     "mlmi_apply": mlmi_apply,
 }
-_COMPILED: dict = {}
 
 
 def compiled(name: str, table: dict | None = None):
-    """The numba-compiled twin of kernel ``name`` of ``table`` (default :data:`PY`), compiled on
-    first call and cached on disk. The compiled kernels release the GIL (``nogil``), so solves in
-    different threads run in parallel."""
-    python = (PY if table is None else table)[name]
-    function = _COMPILED.get(python)
-    if function is None:
-        import numba
-
-        function = numba.njit(cache=True, nogil=True)(python)
-        _COMPILED[python] = function
-    return function
+    """The compiled twin of kernel ``name`` of ``table`` (default :data:`PY`); see :mod:`camcontact.jit`."""
+    return compile_kernel((PY if table is None else table)[name])

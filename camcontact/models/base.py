@@ -76,6 +76,8 @@ class Model(abc.ABC):
     reference: ClassVar[str] = ""
     validity: ClassVar[Mapping[str, tuple[float | None, float | None]]] = {}
     requires: ClassVar[tuple[str, ...]] = ()
+    #: inputs passed to :meth:`evaluate` only when the state holds them (not None)
+    optional_requires: ClassVar[tuple[str, ...]] = ()
     provides: ClassVar[tuple[str, ...]] = ()
     version: ClassVar[str] = "1"
 
@@ -91,11 +93,14 @@ class Model(abc.ABC):
     def __call__(self, state: Mapping[str, Any]) -> dict[str, Any]:
         missing = [key for key in self.requires if key not in state]
         if missing:
+            optional = f" (optionally {list(self.optional_requires)})" if self.optional_requires else ""
             raise InputError(
                 f"model {self.name!r} ({self.family}) needs {missing} which the state does not hold; "
-                f"it requires {list(self.requires)}"
+                f"it requires {list(self.requires)}{optional}"
             )
-        return self.evaluate(**{key: state[key] for key in self.requires})
+        inputs = {key: state[key] for key in self.requires}
+        inputs.update({key: state[key] for key in self.optional_requires if state.get(key) is not None})
+        return self.evaluate(**inputs)
 
     def check_validity(self, values: Mapping[str, Any]) -> list[str]:
         """Messages for inputs outside :attr:`validity` (empty when all are inside)."""

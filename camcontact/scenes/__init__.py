@@ -3,4 +3,4 @@
 Importing this package registers the built-in scenes with :mod:`camcontact.analysis`.
 """
 
-from . import bearing, cam_follower, line_contact, raceway_contact  # noqa: F401
+from . import ball_cone_cvt, bearing, cam_follower, line_contact, raceway_contact  # noqa: F401

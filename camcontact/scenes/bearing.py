@@ -40,7 +40,7 @@ from typing import Any
 import numpy as np
 
 from .. import registry
-from ..analysis import SceneGraph, Step, scene_builder
+from ..analysis import SceneGraph, Step, checked_request, scene_builder
 from ..components.loaded_bearing import LoadedBearing
 from ..contact.contact_temperature import flash_temperature
 from ..contact.geometry import reduced_modulus
@@ -84,13 +84,8 @@ HINTS = {
 @scene_builder(LoadedBearing)
 def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: frozenset | None) -> SceneGraph:
     """Scene graph of a :class:`~camcontact.components.LoadedBearing` (one variant)."""
-    effects = DEFAULT_EFFECTS if effects is None else frozenset(effects)
-    unsupported = sorted(effects - SUPPORTED_EFFECTS)
-    if unsupported:
-        raise InputError(f"effects {unsupported} do not apply to a bearing scene; it supports {sorted(SUPPORTED_EFFECTS)}")
-    unknown = sorted(set(models) - {"film", "life"})
-    if unknown:
-        raise InputError(f"bearing scene: unknown model slots {unknown}; slots are 'film', 'life'")
+    effects = checked_request("bearing", models, effects, slots=("film", "life"), supported=SUPPORTED_EFFECTS,
+                              default=DEFAULT_EFFECTS)
     bearing = scene.bearing
     b_si = bearing.si
     count = bearing.roller_count

@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from .. import registry
-from ..analysis import SceneGraph, Step, scene_builder
+from ..analysis import SceneGraph, Step, checked_request, scene_builder
 from ..components.cam_follower import CamFollower
 from ..contact.geometry import reduced_modulus
 from ..contact.hertz_line import hertz_line, line_approach
@@ -81,14 +81,8 @@ def _degrees(theta) -> str:
 @scene_builder(CamFollower)
 def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects: frozenset | None) -> SceneGraph:
     """Scene graph of a :class:`~camcontact.components.CamFollower` (one variant)."""
-    effects = DEFAULT_EFFECTS if effects is None else frozenset(effects)
-    unsupported = sorted(effects - SUPPORTED_EFFECTS)
-    if unsupported:
-        raise InputError(f"effects {unsupported} do not apply to a cam_follower scene; it supports "
-                         f"{sorted(SUPPORTED_EFFECTS)}")
-    unknown_slots = sorted(set(models) - set(DEFAULT_MODELS))
-    if unknown_slots:
-        raise InputError(f"cam_follower scene: unknown model slots {unknown_slots}; slots are {sorted(DEFAULT_MODELS)}")
+    effects = checked_request("cam_follower", models, effects, slots=sorted(DEFAULT_MODELS),
+                              supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
     models = {**DEFAULT_MODELS, **models}
     cam, follower, train = scene.cam, scene.follower, scene.valve_train
     thesis = scene.convention == "thesis"

@@ -23,7 +23,7 @@ import attrs
 import numpy as np
 
 from .. import registry
-from ..analysis import SceneGraph, Step, scene_builder
+from ..analysis import SceneGraph, Step, checked_request, scene_builder
 from ..components.line_contact import LineContact
 from ..contact.geometry import reduced_modulus, reduced_radius
 from ..contact.hertz_line import hertz_line, line_approach
@@ -89,15 +89,8 @@ def _film_model(spec: Any, effects: frozenset) -> FilmModel:
 @scene_builder(LineContact)
 def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effects: frozenset | None) -> SceneGraph:
     """Scene graph of a :class:`~camcontact.components.LineContact` (one variant)."""
-    effects = DEFAULT_EFFECTS if effects is None else frozenset(effects)
-    unsupported = sorted(effects - SUPPORTED_EFFECTS)
-    if unsupported:
-        raise InputError(
-            f"effects {unsupported} do not apply to a line_contact scene; it supports {sorted(SUPPORTED_EFFECTS)}"
-        )
-    unknown_slots = sorted(set(models) - {"film", "approach"})
-    if unknown_slots:
-        raise InputError(f"line_contact scene: unknown model slots {unknown_slots}; slots are 'film', 'approach'")
+    effects = checked_request("line_contact", models, effects, slots=("film", "approach"),
+                              supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
     piezo = "piezoviscosity" in effects
     b1, b2 = contact.body1, contact.body2
     inputs: dict[str, Any] = {

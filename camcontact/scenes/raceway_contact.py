@@ -41,7 +41,7 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from ..analysis import SceneGraph, Step, scene_builder
+from ..analysis import SceneGraph, Step, checked_request, scene_builder
 from ..components.raceway_contact import RacewayContact
 from ..contact.contact_temperature import couette_temperature_rise, flash_temperature
 from ..contact.geometry import reduced_modulus, reduced_radius
@@ -123,12 +123,7 @@ def thesis_temperature_loop(start_celsius: float, lambda_min: float, lambda_at) 
 def build_raceway_contact(contact: RacewayContact, *, models: Mapping[str, Any],
                           effects: frozenset | None) -> SceneGraph:
     """Scene graph of a :class:`~camcontact.components.RacewayContact` (one variant)."""
-    if effects:
-        raise InputError(f"effects {sorted(effects)} do not apply to a raceway_contact scene: its chain is fixed "
-                         "by the convention (model slot 'convention')")
-    unknown = sorted(set(models) - {"convention"})
-    if unknown:
-        raise InputError(f"raceway_contact scene: unknown model slots {unknown}; the slot is 'convention'")
+    checked_request("raceway_contact", models, effects, slots=("convention",), supported=(), default=())
     convention = resolve_convention(models.get("convention", "thesis"))
     si = contact.si
     m1, m2 = contact.raceway_material, contact.roller_material

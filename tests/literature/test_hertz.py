@@ -214,3 +214,22 @@ def test_subsurface_bad_input():
         line_subsurface(1.0, 1.0, friction=1.5)
     with pytest.raises(InputError, match="depth z must be >= 0"):
         line_contact_stresses(0.0, -1.0, 1.0, 1.0)
+
+
+@pytest.mark.parametrize("Rx, Ry", [(5.588e-3, 7e-3), (7e-3, 5.588e-3), (0.01, 0.01), (2e-3, 0.02)])
+def test_timoshenko_table_route_matches_the_exact_solution(Rx, Ry):
+    """Saccheto (2008) Eqs. 3.42-3.44 with its Tabela 3.1 (method "timoshenko_table") against the exact
+    elliptic integrals: the table holds m, n to about +-0.002 (reference §3.5), so the semi-axes agree
+    to 0.3 % and the pressure to 0.6 %; the ball-cone contact of the thesis (r = 7 mm on a 30 deg cone
+    at R_cont = 24 mm: Rx = 5.588 mm, Ry = 7 mm) is one of the cases."""
+    exact = hertz_elliptical(1250.0, Rx, Ry, 2 * 207e9 / (2 * (1 - 0.09)))
+    table = hertz_elliptical(1250.0, Rx, Ry, 2 * 207e9 / (2 * (1 - 0.09)), method="timoshenko_table")
+    assert table.a_x == pytest.approx(exact.a_x, rel=3e-3) and table.a_y == pytest.approx(exact.a_y, rel=3e-3)
+    assert table.p_max == pytest.approx(exact.p_max, rel=6e-3)
+    assert table.approach == pytest.approx(exact.approach, rel=1e-2)
+
+
+def test_timoshenko_table_refuses_contacts_beyond_it():
+    """Radius ratio 40: theta = arccos(39/41) = 18 deg, below the table's 20 deg."""
+    with pytest.raises(InputError, match="outside the table"):
+        hertz_elliptical(100.0, 1e-3, 0.04, 2.3e11, method="timoshenko_table")

@@ -1,5 +1,6 @@
 """TOML scenes (no code execution) and the camcontact command."""
 
+import math
 from pathlib import Path
 
 import pandas as pd
@@ -155,3 +156,15 @@ def test_bearing_and_raceway_scene_errors_name_the_key():
     text = (TUTORIALS / "pellet_mill_raceway_contact.toml").read_text(encoding="utf-8")
     with pytest.raises(InputError, match="RacewayContact.raceway = 'left'"):
         parse_scene(text.replace('raceway = "outer"', 'raceway = "left"'))
+
+
+def test_ball_cone_cvt_scene_file_runs(tmp_path, capsys):
+    """The Forti CVT file: two Hertz variants (exact, Tabela 3.1) agree to 0.3 % on the semi-axes;
+    mu_min = tan(10 deg) 6/(sin(30 deg) 24) = 0.088163 (Saccheto Eq. 6.19)."""
+    csv = tmp_path / "cvt.csv"
+    assert main(["run", str(TUTORIALS / "forti_ball_cone_cvt.toml"), "--csv", str(csv)]) == 0
+    frame = pd.read_csv(csv)
+    assert list(frame["variant"]) == ["exact", "timoshenko_table"]
+    assert frame["a_rolling [µm]"][1] == pytest.approx(frame["a_rolling [µm]"][0], rel=3e-3)
+    assert frame["mu_min [-]"][0] == pytest.approx(math.tan(math.radians(10)) * 6 / (0.5 * 24), rel=1e-6)
+    assert "h_min_in [nm]" in frame
