@@ -65,6 +65,19 @@ print(result.steps_frame())
 result.plot().savefig("cvt_contacts.png", dpi=80)
 
 # %% [markdown]
+# Where 150 W comes from: the road-load power of Eq. 7.1 for a 75 kg rider on a flat road (the thesis
+# gives m and C_d = 0.75-0.9; f_0, A_f and rho are assumed here) and the optimal cadence of Tabela 7.1.
+
+# %%
+from camcontact.dynamics.bicycle_load import cyclist_power, optimal_cadence  # noqa: E402
+
+for kmh in (20, 25, 28):
+    watts = cyclist_power(kmh / 3.6, mass=75.0, rolling_resistance=0.005, drag_coefficient=0.8, frontal_area=0.5,
+                          air_density=1.2)
+    cadence = f"{optimal_cadence(watts):.1f} rpm" if 122.6 <= watts <= 245.1 else "outside Tabela 7.1"
+    print(f"{kmh} km/h: {watts:.0f} W, optimal cadence {cadence}")
+
+# %% [markdown]
 # At 150 W the peak pressure is 4.3 GPa and the film about 14 nm (Lambda 0.1): the thesis's "films
 # of order µm" does not follow from the standard formulas (reference §7). The shortest lives are the
 # cone tracks (nine stress cycles per cone revolution).
