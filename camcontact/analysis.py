@@ -311,6 +311,29 @@ class Analysis:
             per_index=graph.per_index if graph else frozenset(),
         )
 
+    def sweep(self, grid: Any, *, executor: Any = None, progress: bool | None = None, errors: str = "record",
+              table: str = "auto", units: Mapping[str, str] | None = None, chunksize: int | None = None):
+        """This analysis over many cases: one tidy pandas DataFrame (see :mod:`camcontact.sweep`).
+
+        ``grid`` maps field paths of the scene (``"speed"``, ``"cam.base_radius"``) to values (the
+        cartesian product is swept) or is a DataFrame of cases; ``executor`` is any
+        ``concurrent.futures.Executor`` (None: serial here; a process pool; a Dask client's
+        ``get_executor()``); failing cases keep their parameters and the error in the table.
+
+        >>> import camcontact as cc
+        >>> steel = cc.Material(E="210 GPa", nu=0.3)
+        >>> contact = cc.LineContact(body1=cc.Body(material=steel, radius="20 mm"),
+        ...                          body2=cc.Body(material=steel, radius="10 mm"), load="1 kN", length="10 mm")
+        >>> frame = cc.Analysis(contact, outputs=["p_h"]).sweep({"load": ["1 kN", "4 kN"]}, progress=False)
+        >>> list(frame.columns), round(float(frame["p_h [MPa]"][1] / frame["p_h [MPa]"][0]), 6)
+        (['load [kN]', 'p_h [MPa]', 'error'], 2.0)
+        """
+        from .sweep import run_sweep
+
+        return run_sweep(self.scene, grid, outputs=self.requested, models=self.models, effects=self.effects,
+                         executor=executor, progress=progress, errors=errors, table=table, units=units,
+                         chunksize=chunksize)
+
     def steps(self, variant: str | None = None) -> list[str]:
         """Names of the steps that :meth:`run` will execute (for the first or a given variant)."""
         label = self.variants[0][0] if variant is None else variant

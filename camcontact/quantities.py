@@ -108,6 +108,7 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("natural_frequency", "1/s", "Hz", "undamped natural frequency of the 1-DOF valve train"),
         _q("k_min", "N/m", "N/m", "smallest spring stiffness without jump at the design speed"),
         _q("jump", None, None, "whether (and where) the follower leaves the cam"),
+        _q("jump_margin", "N", "N", "smallest contact force over the cycle: the margin against jump (<= 0: jump)"),
         _q("contact_force_max", "N", "N", "largest contact force over the cycle"),
         _q("p_h_max", "Pa", "MPa", "largest Hertz pressure over the cycle"),
         _q("h_min_cycle", "m", "um", "smallest minimum film over the cycle"),

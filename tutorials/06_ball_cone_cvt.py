@@ -91,11 +91,11 @@ ratios = [0.5, 0.75, 1.0, 1.5, 2.0]
 matrix = sweep_frame(point, {"power": [f"{p} W" for p in powers], "ratio": ratios},
                      outputs=["life_system", "h_min_in", "slip_fraction_in", "traction_check"])
 print(matrix.to_string(index=False))
-life = matrix.pivot(index="power", columns="ratio", values="life_system [h]").loc[[f"{p} W" for p in powers]]
+life = matrix.pivot(index="power [W]", columns="ratio [-]", values="life_system [h]")
 fig, ax = plt.subplots(figsize=(6, 4))
 image = ax.imshow(np.log10(life.to_numpy()), origin="lower", cmap="viridis", aspect="auto")
 ax.set_xticks(range(len(ratios)), [str(r) for r in ratios])
-ax.set_yticks(range(len(powers)), life.index)
+ax.set_yticks(range(len(powers)), [f"{p:g} W" for p in life.index])
 ax.set(xlabel="ratio (reduction)", ylabel="power", title="log10 system L10 [h]")
 fig.colorbar(image, ax=ax)
 fig.savefig("cvt_life_map.png", dpi=80)

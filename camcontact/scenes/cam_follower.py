@@ -58,7 +58,7 @@ DEFAULT_OUTPUTS = (
     "cam_angle", "lift", "follower_velocity", "follower_acceleration", "pressure_angle", "cam_radius", "R", "u_m",
     "contact_force", "cam_torque", "w", "b", "p_h", "M", "L", "h_c", "h_min", "film_regime", "friction_force",
     "friction_power", "wear_rate",
-    "motion_continuity", "natural_frequency", "k_min", "jump", "contact_force_max", "p_h_max", "h_min_cycle",
+    "motion_continuity", "natural_frequency", "k_min", "jump_margin", "jump", "contact_force_max", "p_h_max", "h_min_cycle",
     "friction_power_mean", "wear_rate_mean",
 )
 HINTS = {
@@ -285,6 +285,8 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
         Step("continuity", ("program",), ("motion_continuity",), run_continuity),
         Step("natural_frequency", (), ("natural_frequency",), run_natural),
         Step("k_min", ("program", "speed"), ("k_min",), run_k_min),
+        Step("jump_margin", ("contact_force",), ("jump_margin",),
+             lambda s: {"jump_margin": float(np.min(s["contact_force"]))}),
         force_step,
         Step("normal_force", ("contact_force", "pressure_angle"), ("normal_force", "contact_open"), run_normal),
         Step("jump", ("contact_open", "contact_force", "cam_angle"), ("jump",), run_jump),

@@ -48,3 +48,9 @@ def test_cam_cycle_quick(tmp_path):
     assert (tmp_path / "cam_cycle.csv").exists()
     assert set(frame["convention"]) == {"thesis", "consistent"} and (frame["angles"] == 24).all()
     assert (frame["h_min over the cycle [um]"] > 0).all()
+
+
+def test_sweep_scaling_quick(tmp_path):
+    frame = _load("sweep_scaling").main(["--quick", "--out", str(tmp_path)])
+    assert list(frame["executor"]) == ["serial", "process pool", "process pool"]
+    assert frame["identical table"].all() and (frame["cases"] == 8).all()
