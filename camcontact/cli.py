@@ -3,6 +3,9 @@
 ``camcontact run [SCENE.toml]``
     run a scene (default: the embedded default scene), print the report and the steps that
     ran, write the report as CSV (and a plot with ``--plot``).
+``camcontact sweep SCENE.toml [--workers N] [--csv F] [--parquet F]``
+    run the scene over its [sweep] table (the cartesian product of field values) into one
+    table, serially or on N worker processes, with a progress bar; failing cases keep their error.
 ``camcontact plugins [--family F]``
     list every model of the registry: name, family, source distribution, reference, status.
 ``camcontact default-scene``
@@ -81,6 +84,43 @@ def _run(args: argparse.Namespace) -> int:
     return 0
 
 
+def _sweep(args: argparse.Namespace) -> int:
+    from concurrent.futures import ProcessPoolExecutor
+
+    from .report_export import write_csv, write_parquet
+    from .scene_file import load_scene
+
+    scene = load_scene(args.scene)
+    if not scene.sweep:
+        raise InputError(f"{args.scene}: no [sweep] table (give path = [values, ...] per swept field)")
+    if args.workers < 0:
+        raise InputError(f"--workers {args.workers}: allowed 0 (serial, here) or more")
+    count = 1
+    for values in scene.sweep.values():
+        count *= len(values)
+    print(f"camcontact {__version__} — sweep of {scene.name}: {count} cases over {', '.join(scene.sweep)}"
+          + (f" on {args.workers} worker processes" if args.workers else ", serial"))
+    analysis = scene.analysis()
+    options = dict(progress=None if not args.no_progress else False, table=args.table, units=scene.units)
+    if args.workers:
+        with ProcessPoolExecutor(max_workers=args.workers) as pool:
+            frame = analysis.sweep(scene.sweep, executor=pool, **options)
+    else:
+        frame = analysis.sweep(scene.sweep, **options)
+    failed = int((frame["error"] != "").sum())
+    with __import__("pandas").option_context("display.width", 250, "display.max_columns", 30):
+        print(frame.head(40).to_string(index=False, float_format=lambda v: f"{v:.5g}"))
+    if len(frame) > 40:
+        print(f"... {len(frame) - 40} more rows in the files")
+    csv_path = Path(args.csv) if args.csv else Path(f"{Path(args.scene).stem}_sweep.csv")
+    write_csv(frame, csv_path)
+    print(f"\n{len(frame)} rows ({failed} failed cases) written to {csv_path}")
+    if args.parquet:
+        write_parquet(frame, args.parquet)
+        print(f"Parquet written to {args.parquet}")
+    return 0
+
+
 def _plugins(args: argparse.Namespace) -> int:
     import warnings
 
@@ -119,6 +159,15 @@ def main(argv: list[str] | None = None) -> int:
     run.add_argument("--units", nargs="*", metavar="NAME=UNIT", help="display units, e.g. h_min=nm p_h=GPa")
     run.add_argument("--plot", metavar="PNG", help="also save a plot of the result")
     run.set_defaults(handler=_run)
+    sweep = commands.add_parser("sweep", help="run a scene file over its [sweep] table into one table")
+    sweep.add_argument("scene", help="scene TOML file with a [sweep] table")
+    sweep.add_argument("--workers", type=int, default=0, help="worker processes (default 0: serial, here)")
+    sweep.add_argument("--csv", help="where to write the table (default: <scene>_sweep.csv)")
+    sweep.add_argument("--parquet", help="also write the table as Parquet (needs the [parquet] extra)")
+    sweep.add_argument("--table", choices=("auto", "cases", "index"), default="auto",
+                       help="rows per case, or per case and cam angle/roller (default: auto)")
+    sweep.add_argument("--no-progress", action="store_true", help="no progress bar")
+    sweep.set_defaults(handler=_sweep)
     plugins = commands.add_parser("plugins", help="list the models of the plugin registry")
     plugins.add_argument("--family", help="only this family")
     plugins.set_defaults(handler=_plugins)

@@ -15,6 +15,10 @@ reported with the keys that are allowed. Layout::
     [report]                          # optional
     units = { h_min = "nm" }
 
+    [sweep]                           # optional: `camcontact sweep` runs the cartesian product
+    speed = ["500 rpm", "1000 rpm"]
+    "cam.base_radius" = ["30 mm", "40 mm"]
+
     [contact]                         # LineContact fields
     load = "10 kN"
     length = "41.35 mm"
@@ -85,7 +89,7 @@ _NESTED: dict[type, dict[str, Any]] = {
     LoadedBallConeCVT: {"cvt": BallConeCVT},
     BallConeCVT: {"material": Material, "lubricant": Lubricant},
 }
-_TOP_KEYS = {"scene", "name", "outputs", "effects", "models", "report", "contact"}
+_TOP_KEYS = {"scene", "name", "outputs", "effects", "models", "report", "contact", "sweep"}
 
 
 @attrs.frozen
@@ -99,6 +103,8 @@ class Scene:
     effects: tuple[str, ...] | None
     models: dict[str, Any]
     units: dict[str, str]
+    #: the [sweep] table: field path -> list of values (empty: no sweep)
+    sweep: dict[str, list] = attrs.field(factory=dict)
 
     def analysis(self) -> Analysis:
         """The :class:`~camcontact.analysis.Analysis` this scene describes."""
@@ -158,10 +164,19 @@ def parse_scene(text: str, where: str = "scene") -> Scene:
     units = report.get("units", {}) if isinstance(report, Mapping) else None
     if not isinstance(units, Mapping) or not all(isinstance(v, str) for v in units.values()):
         raise InputError(f"{where}: [report] units must be a table of quantity = \"unit\"")
+    sweep = data.get("sweep", {})
+    if not isinstance(sweep, Mapping) or not all(isinstance(v, list) and v for v in sweep.values()):
+        raise InputError(f"{where}: [sweep] must be a table of path = [value, ...] (e.g. speed = [\"500 rpm\", "
+                         f"\"1000 rpm\"], \"cam.base_radius\" = [\"30 mm\", \"40 mm\"])")
+    if sweep:
+        from .sweep import check_path
+
+        for path in sweep:
+            check_path(component, path)
     return Scene(
         kind=kind, name=str(data.get("name", kind)), component=component,
         outputs=_string_list(data, "outputs", where), effects=_string_list(data, "effects", where),
-        models=dict(models), units=dict(units),
+        models=dict(models), units=dict(units), sweep={str(k): list(v) for k, v in sweep.items()},
     )
 
 
