@@ -14,6 +14,15 @@ choice.
     python benchmarks/accuracy_vs_time.py                 # full: M 5..1000 x L 2..20, levels 4..12
     python benchmarks/accuracy_vs_time.py --quick         # 2 x 2 points, levels 4..7 (the tests run this)
     python benchmarks/accuracy_vs_time.py --viscosity barus --density incompressible
+    python benchmarks/accuracy_vs_time.py --cam           # the cam cycle: quasi-steady vs transient
+    python benchmarks/accuracy_vs_time.py --cam --quick   # 4-degree steps, level 5 (the tests run this)
+
+``--cam`` measures the LS-1 cam with a flat-faced follower at 1000 rpm (entrainment reversal at the
+nose) over one turn in 0.5-degree steps (720 instants): the quasi-steady Pan–Hamrock formula, the
+quasi-steady multigrid film at levels 6-8 and the transient multigrid film with the squeeze term
+(``effects={"squeeze"}``) at levels 6-8 — the smallest film over the turn, the smallest film within
+5 degrees of each reversal, and the wall time of each (median of ``--repeats``) — into
+``accuracy_vs_time_cam.csv``.
 
 Writes ``accuracy_vs_time.csv`` (one row per point x method x level; a ``status`` column says
 converged / not converged / failed) and ``accuracy_vs_time.png`` (log-log error vs time, the
@@ -173,6 +182,45 @@ def plot(frame: pd.DataFrame, path: Path) -> None:
     plt.close(fig)
 
 
+def cam_cycle_rows(step_deg: float, levels, repeats: int) -> pd.DataFrame:
+    """Quasi-steady formula / quasi-steady multigrid / transient multigrid over the flat-follower LS-1 turn."""
+    import attrs
+
+    import camcontact as cc
+    from camcontact.models.film_multigrid import Multigrid
+    from camcontact.scene_file import load_scene
+
+    scene = load_scene()
+    flat = attrs.evolve(scene.component, follower=cc.Follower.flat(material=scene.component.follower.material),
+                        cam=attrs.evolve(scene.component.cam, base_radius="49.7494 mm"), angle_step=f"{step_deg} deg")
+    steady_effects = {"elasticity", "piezoviscosity", "compressibility"}
+    methods = [("pan_hamrock (quasi-steady)", "pan_hamrock", steady_effects)]
+    for level in levels:
+        model = Multigrid(levels=level, tolerance=1e-5)
+        methods.append((f"multigrid L{level} (quasi-steady)", model, steady_effects))
+        methods.append((f"multigrid L{level} (transient, squeeze)", model, steady_effects | {"squeeze"}))
+    rows = []
+    for label, film, effects in methods:
+        times, result = [], None
+        for _ in range(repeats):
+            start = time.perf_counter()
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                result = cc.Analysis(flat, outputs=["cam_angle", "u_m", "h_min"], models={"film": film},
+                                     effects=effects).run()
+            times.append(time.perf_counter() - start)
+        theta, u, h = (np.asarray(result[k], dtype=float) for k in ("cam_angle", "u_m", "h_min"))
+        flips = np.flatnonzero(np.sign(u[:-1]) * np.sign(u[1:]) < 0)
+        near = np.zeros(theta.size, dtype=bool)
+        for i in flips:
+            near |= np.abs(theta - theta[i]) <= math.radians(5.0)
+        rows.append({"method": label, "angles": theta.size, "h_min over the turn [nm]": 1e9 * np.nanmin(h),
+                     "h_min near reversal [nm]": 1e9 * np.nanmin(h[near]) if near.any() else np.nan,
+                     "h_min at 90 deg [nm]": 1e9 * float(np.interp(math.pi / 2, theta, h)),
+                     "median time [s]": statistics.median(times)})
+    return pd.DataFrame(rows)
+
+
 def main(argv: list[str] | None = None) -> pd.DataFrame:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="2 x 2 points, levels 4..7, one run each")
@@ -180,7 +228,13 @@ def main(argv: list[str] | None = None) -> pd.DataFrame:
     parser.add_argument("--density", default="dowson_higginson", choices=("dowson_higginson", "incompressible"))
     parser.add_argument("--repeats", type=int, default=None, help="runs per level (median); default 3, quick 1")
     parser.add_argument("--out", default=str(Path(__file__).parent / "results"), help="output folder")
+    parser.add_argument("--cam", action="store_true", help="the cam cycle: quasi-steady versus transient films")
     args = parser.parse_args(argv)
+    if args.cam:
+        step, levels = (4.0, (5,)) if args.quick else (0.5, (6, 7, 8))
+        frame = cam_cycle_rows(step, levels, args.repeats or (1 if args.quick else 3))
+        return write_results(frame, args.out, "accuracy_vs_time_cam", lambda f, p: None,
+                             lambda f: f.set_index("method"))
     if args.quick:
         Ms, Ls, levels, repeats = (20, 100), (5, 10), range(4, 8), args.repeats or 1
     else:

@@ -9,10 +9,14 @@ Model slots (``Analysis(models=...)``): ``film`` (any line film model, formula o
 ``"multigrid"``, warm-started from the previous angle; default ``"pan_hamrock"``), ``friction``
 (``friction_models``; default ``"coulomb"``), ``wear`` (``wear_models``; default ``"archard"``).
 
-Effects: ``elasticity``, ``piezoviscosity``, ``compressibility`` (on by default) and ``dynamics``
+Effects: ``elasticity``, ``piezoviscosity``, ``compressibility`` (on by default), ``dynamics``
 (off by default: the contact force is the prescribed-motion 1-DOF force of Tsuha 2015 Eq. 3.46;
 on: the valve train's lumped 2-DOF/5-DOF model is integrated over ``CamFollower.cycles`` turns with
-unilateral contact and the last turn is reported).
+unilateral contact and the last turn is reported) and ``squeeze`` (off by default: the film is
+quasi-steady, angle by angle; on: the numerical film — film model ``"multigrid"`` — is solved as one
+transient over the turn with the squeeze term, implicit BDF2 steps from angle to angle through any
+entrainment reversal, :func:`camcontact.ehl.line_transient.transient_cycle`; it starts from the
+steady film at the steadiest angle, e.g. on the base circle).
 """
 
 from __future__ import annotations
@@ -39,11 +43,11 @@ from .line_contact import _film_model, lubricant_step
 
 __all__ = ["DEFAULT_EFFECTS", "SUPPORTED_EFFECTS", "build_cam_follower"]
 
-SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "dynamics"})
+SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "dynamics", "squeeze"})
 DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
 DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard"}
 #: beyond this Moes M (entrainment speed near zero) no steady solution is attempted: the steady
-#: film tends to zero and the real film lives on squeeze (a transient solution, not modelled here)
+#: film tends to zero and the real film lives on squeeze (the ``squeeze`` effect solves it transiently)
 STEADY_M_LIMIT = 2000.0
 
 KINEMATICS = ("lift", "follower_velocity", "follower_acceleration", "follower_jerk", "pressure_angle", "cam_radius",
@@ -214,8 +218,18 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
                 M[i] = math.inf if s["w"][i] > 0.0 else 0.0
         return {"alpha_effective": alpha, "U": U, "G": G, "W": W, "M": M, "L": L}
 
+    squeeze = "squeeze" in effects
+
     def run_film(s):
+        if squeeze:
+            return _transient_films(film_model, s, 0.5 if thesis else 1.0, piezo)
         return _cycle_films(film_model, s, film_speed(s))
+
+    def check_squeeze():
+        if squeeze and getattr(film_model, "name", "") != "multigrid":
+            raise InputError("the 'squeeze' effect solves the film numerically over the turn: use the film model "
+                             "'multigrid' (models={'film': 'multigrid'}), or leave the effect off for the "
+                             f"quasi-steady {getattr(film_model, 'name', 'formula')} film")
 
     def run_ehl_details(s):
         solutions = s["film_solutions"]
@@ -297,8 +311,9 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
              ("alpha_effective", "U", "G", "W", "M", "L"), run_groups),
         Step("film", ("w", "R", "E_reduced", "u_m", "eta0", "alpha_effective", "M", "L", "lubricant_state",
                       "density_law", "contact_open"),
-             (*_films(film_model), "film_regime", "film_solutions"), run_film, model=film_name,
-             version=getattr(film_model, "version", "")),
+             (*_films(film_model), "film_regime", "film_solutions"), run_film,
+             model=f"{film_name} (transient, squeeze)" if squeeze else film_name,
+             version=getattr(film_model, "version", ""), check=check_squeeze),
         Step("ehl_details", ("film_solutions",), ("H0", "H_min", "H_c", "spike_pressure"), run_ehl_details),
         Step("lambda", ("h_min", "sigma1", "sigma2"), ("Lambda_min",), lambda_min),
         Step("friction", tuple(dict.fromkeys(("normal_force", "u_s", "angular_speed", "cam_angle",
@@ -400,7 +415,7 @@ def _cycle_films(model, s, u_film) -> dict:
             regime[i] = "contact lost (jump): no film"
             continue
         if u_film[i] == 0.0:
-            regime[i] = "u_m = 0: no steady film (squeeze film not modelled; transient solution needed)"
+            regime[i] = "u_m = 0: no steady film (the squeeze film needs the transient solution: effect 'squeeze')"
             continue
         state = {"R": float(s["R"][i]), "w": float(s["w"][i]), "E_reduced": s["E_reduced"], "u_m": float(u_film[i]),
                  "eta0": s["eta0"], "alpha": s["alpha_effective"], "lubricant_state": s["lubricant_state"],
@@ -411,7 +426,7 @@ def _cycle_films(model, s, u_film) -> dict:
         use, note = model, ""
         if numerical and s["M"][i] > STEADY_M_LIMIT:
             use, note = fallback, (f"u_m ≈ 0 (|u_m| = {abs(s['u_m'][i]):.3g} m/s, M = {s['M'][i]:.4g} > "
-                                   f"{STEADY_M_LIMIT:g}): Pan–Hamrock formula; squeeze film not modelled")
+                                   f"{STEADY_M_LIMIT:g}): Pan–Hamrock formula; squeeze film: effect 'squeeze'")
         states[key] = (state, use, note)
     # --- solve: formulas directly, the numerical film in warm-started chains
     cache: dict = {}
@@ -451,9 +466,53 @@ def _cycle_films(model, s, u_film) -> dict:
             messages += use.check_validity({k: s[k][i] for k in ("U", "G", "W", "M", "L")})
         if (s["M"][i] > STEADY_M_LIMIT or reversal[i]) and not note:
             messages.insert(0, f"u_m ≈ 0: entrainment reversal (u_m = {s['u_m'][i]:.3g} m/s, M = {s['M'][i]:.4g}); "
-                               "the steady film → 0 there, squeeze film not modelled")
+                               "the steady film → 0 there; squeeze film: effect 'squeeze'")
         regime[i] = "; ".join(messages) if messages else "ok"
     return {**values, "film_regime": regime, "film_solutions": solutions}
+
+
+def _steadiest(w: np.ndarray, R: np.ndarray, u: np.ndarray) -> int:
+    """The angle whose neighbours differ least in w, R and u (the base circle of a cam): the transient
+    march starts there from the steady film, so its start is the periodic state."""
+    def change(a):
+        scale = np.max(np.abs(a)) or 1.0
+        return (np.abs(a - np.roll(a, 1)) + np.abs(np.roll(a, -1) - a)) / scale
+
+    score = change(w) + change(R) + change(u)
+    score[u == 0.0] = np.inf
+    return int(np.argmin(score))
+
+
+def _transient_films(model, s, speed_factor: float, piezo: bool) -> dict:
+    """Films over the turn from one transient march with the squeeze term (the ``squeeze`` effect)."""
+    from ..ehl.line_transient import transient_cycle
+
+    theta, omega = np.asarray(s["cam_angle"], dtype=float), float(s["angular_speed"][0])
+    open_ = np.asarray(s["contact_open"]) | (np.asarray(s["w"]) <= 0.0)
+    if np.any(open_):
+        raise InputError(f"the squeeze (transient) film needs contact at every angle; the follower leaves the cam at "
+                         f"{_degrees(theta[open_][:3])}: stiffen the spring or lower the speed")
+    if not np.allclose(s["angular_speed"], omega) or theta.size < 3:
+        raise InputError("the squeeze (transient) film needs a constant cam speed and at least 3 angles over the turn")
+    u = np.asarray(s["u_m"], dtype=float) * speed_factor
+    start = _steadiest(np.asarray(s["w"]), np.asarray(s["R"]), u)
+    order = np.roll(np.arange(theta.size), -start)
+    times = np.mod(theta[order] - theta[start], 2.0 * np.pi) / omega
+    state = s["lubricant_state"]
+    roelands = getattr(state.pressure_law, "name", "roelands") == "roelands"
+    result = transient_cycle(
+        times, np.asarray(s["w"])[order], np.asarray(s["R"])[order], u[order], E_reduced=s["E_reduced"],
+        eta0=s["eta0"], alpha=s["alpha_effective"] if piezo else 0.0,
+        z=state.roelands_z if roelands and piezo else None, viscosity="roelands" if roelands and piezo else "barus",
+        density=s["density_law"], levels=model.levels, tolerance=max(model.tolerance, 1e-6),
+        strict=model.strict)
+    films = {"h_c": np.empty(theta.size), "h_min": np.empty(theta.size)}
+    films["h_c"][order], films["h_min"][order] = result.h_c, result.h_min
+    regime = np.empty(theta.size, dtype=object)
+    for k, i in enumerate(order):
+        note = "transient (squeeze)" + (" at u_m = 0" if u[i] == 0.0 else "")
+        regime[i] = note if result.converged[k] else f"{note}: not converged: {result.records[k].message}"
+    return {**films, "film_regime": regime, "film_solutions": [None] * theta.size}
 
 
 #: the fewest distinct angles per warm-started chain (each chain starts cold, ~0.1-0.4 s at level 8)

@@ -54,3 +54,13 @@ def test_sweep_scaling_quick(tmp_path):
     frame = _load("sweep_scaling").main(["--quick", "--out", str(tmp_path)])
     assert list(frame["executor"]) == ["serial", "process pool", "process pool"]
     assert frame["identical table"].all() and (frame["cases"] == 8).all()
+
+
+def test_accuracy_vs_time_cam_quick(tmp_path):
+    frame = _load("accuracy_vs_time").main(["--cam", "--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "accuracy_vs_time_cam.csv").exists()
+    by = frame.set_index("method")
+    transient, steady = by.loc["multigrid L5 (transient, squeeze)"], by.loc["multigrid L5 (quasi-steady)"]
+    # the squeeze term keeps the film at the reversals above the quasi-steady collapse
+    assert transient["h_min near reversal [nm]"] > steady["h_min near reversal [nm]"] > 0
+    assert (frame["median time [s]"] > 0).all()

@@ -1,0 +1,640 @@
+"""Transient isothermal line-contact EHL with the squeeze term, for the cam cycle.
+
+The time-dependent Reynolds equation of a line contact (Tsuha 2015 Eq. 4.2; Venner & Lubrecht
+2000 ch. 9-10)
+
+.. math::
+    \\frac{\\partial}{\\partial x}\\left(\\frac{\\rho h^3}{12\\eta}\\frac{\\partial p}{\\partial x}\\right)
+    - u_m(t)\\frac{\\partial(\\rho h)}{\\partial x} - \\frac{\\partial(\\rho h)}{\\partial t} = 0,\\qquad
+    p \\ge 0,\\qquad \\int p\\,dx = w(t)
+
+    h = h_0(t) + \\frac{x^2}{2R(t)} - \\frac{4}{\\pi E'}\\int \\ln|x - x'|\\,p(x')\\,dx'
+
+with u_m = (u1 + u2)/2 (signed), is written in ONE fixed dimensional reference, so that the grid
+and the time derivative mean the same over the whole cycle. The reference is a load per length
+w_r, a radius R_r and a speed u_r (default: the loaded instant with the largest Hertz half-width,
+and the largest |u_m|), with b_r = sqrt(8 w_r R_r/(pi E')), p_r = 2 w_r/(pi b_r):
+
+.. math::
+    X = x/b_r,\\quad P = p/p_r,\\quad H = h R_r/b_r^2,\\quad T = t u_r/b_r,\\quad
+    s(T) = u_m/u_r,\\quad r(T) = R_r/R
+
+    \\frac{d}{dX}\\left(\\xi\\frac{dP}{dX}\\right) - s\\frac{d(\\bar\\rho H)}{dX}
+    - \\frac{d(\\bar\\rho H)}{dT} = 0,\\quad \\xi = \\frac{\\bar\\rho H^3}{\\bar\\eta\\lambda_r},\\quad
+    \\lambda_r = \\frac{12 u_r \\eta_0 R_r^2}{b_r^3 p_r}
+
+    H = H_0 + r\\frac{X^2}{2} - \\frac{1}{\\pi}\\int \\ln|X - X'|\\,P\\,dX',\\qquad
+    \\int P\\,dX = \\frac{\\pi}{2}\\frac{w}{w_r}
+
+At the reference instant (s = r = 1, w = w_r) this is exactly the steady problem of
+:mod:`camcontact.ehl.line_problem` (lambda_r = 3 pi^2/(8 M_r^2), alpha-bar = alpha p_r).
+
+Discretisation: the steady one of :mod:`camcontact.ehl.line_operator` (central Poiseuille term,
+second-order upwind wedge, piecewise-constant-pressure deformation, trapezoidal load balance)
+with the wedge scaled by s and upwinded in the direction of the flow: backward for u_m > 0,
+forward for u_m < 0, absent at u_m = 0 (then only the squeeze term carries the film); a step
+with u_m < 0 is solved on the grid mirrored about X = 0 with |u_m|, so that the Gauss-Seidel
+sweeps and distributive dipoles follow the flow (sweeping against it diverged). Time:
+implicit BDF2 with variable steps (BDF1 on the first step, or throughout with
+``scheme="bdf1"``); the history part of d(rho H)/dT goes into the right-hand side of the FAS
+problem, the implicit part c_t rho H into the operator
+(:mod:`camcontact.ehl._transient_kernels`). Each step is solved by the compiled FAS cycles of
+the steady solver (same hierarchy, MLMI, coarsest-grid Newton, free-boundary rules),
+warm-started from the previous step; if a step diverges or stalls it is retried with the
+conservative settings of :data:`camcontact.ehl.line_multigrid.ROBUST`. Cavitation: P >= 0
+(complementarity, as in the steady solver; mass conservation in the cavitated zone is not
+modelled).
+
+The march starts from the steady solution of the first instant (which needs u_m != 0) or from
+a given state. Per step it returns h_c = H(0) b_r^2/R_r, h_min, p_max, H0 and a convergence
+record; non-converged steps give a :class:`~camcontact.errors.ConvergenceWarning` (or
+:class:`~camcontact.errors.ConvergenceError` with ``strict=True``); a non-finite state always
+raises.
+
+References
+----------
+Venner, C.H. & Lubrecht, A.A. (2000) Multilevel Methods in Lubrication, Elsevier, ch. 9-10.
+Tsuha, N.A.H. (2015) MSc thesis, UNICAMP, Eq. 4.2 and §6.2.1 (the squeeze term neglected; u_m
+reverses at the nose of the flat-faced follower).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+import warnings
+
+import attrs
+import numpy as np
+
+from ..errors import ConvergenceError, ConvergenceWarning, InputError
+from . import _fas_kernels, _kernels, _transient_kernels
+from .deformation import DIRECT_BELOW
+from .line_multigrid import ROBUST, MultigridSettings, _alternating, _describe, _Solver, _stagnated, solve_multigrid
+from .line_problem import ROELANDS_P0, LineEHLProblem
+from .line_solution import ConvergenceRecord
+
+__all__ = ["TransientLineResult", "TransientLineSolver", "TransientScaling", "TransientStep", "transient_cycle"]
+
+SCHEMES = ("bdf1", "bdf2")
+
+
+# ----------------------------------------------------------------------------- scaling
+@attrs.frozen
+class TransientScaling:
+    """The fixed dimensional reference of a transient march (see the module docstring).
+
+    Attributes: R [m], w [N/m], u [m/s] of the reference; b [m], p_h [Pa], h_scale = b^2/R [m],
+    time_scale = b/u [s]; ``problem``: the dimensionless :class:`LineEHLProblem` of the reference
+    (its lambda and laws are those of the transient operator; its domain the grid's).
+    """
+
+    R: float
+    w: float
+    u: float
+    E_reduced: float
+    b: float
+    p_h: float
+    h_scale: float
+    time_scale: float
+    problem: LineEHLProblem
+    eta0: float
+    alpha: float
+
+    @classmethod
+    def from_reference(cls, *, R: float, w: float, u: float, E_reduced: float, eta0: float, alpha: float,
+                       z: float | None = None, viscosity: str = "roelands", density: str = "dowson_higginson",
+                       p0: float = ROELANDS_P0, elastic: bool = True, domain: tuple = (-4.0, 4.0)) -> TransientScaling:
+        """Reference from R [m], w [N/m], u > 0 [m/s], E' [Pa], eta0 [Pa*s], alpha [1/Pa]."""
+        for name, value in (("R", R), ("w", w), ("u", u), ("E_reduced", E_reduced), ("eta0", eta0)):
+            if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value) and value > 0):
+                raise InputError(f"transient EHL reference: {name} = {value!r} must be finite and > 0")
+        if not (math.isfinite(alpha) and alpha >= 0):
+            raise InputError(f"transient EHL reference: alpha = {alpha!r} 1/Pa must be finite and >= 0")
+        problem = LineEHLProblem.from_contact(R=R, w=w, E_reduced=E_reduced, u_m=u, eta0=eta0, alpha=alpha, z=z,
+                                              viscosity=viscosity, density=density, p0=p0, elastic=elastic,
+                                              domain=tuple(domain))
+        b = math.sqrt(8.0 * w * R / (math.pi * E_reduced))
+        return cls(R=float(R), w=float(w), u=float(u), E_reduced=float(E_reduced), b=b, p_h=2.0 * w / (math.pi * b),
+                   h_scale=b * b / R, time_scale=b / u, problem=problem, eta0=float(eta0), alpha=float(alpha))
+
+
+# ----------------------------------------------------------------------------- results
+@attrs.frozen
+class TransientStep:
+    """One solved instant: dimensional films and pressure, H0 (reference scaling), the record."""
+
+    time: float
+    h_c: float
+    h_min: float
+    p_max: float
+    H0: float
+    record: ConvergenceRecord
+    P: np.ndarray = attrs.field(repr=False, eq=False, default=None)
+    H: np.ndarray = attrs.field(repr=False, eq=False, default=None)
+
+
+@attrs.frozen
+class TransientLineResult:
+    """Per-instant results of :func:`transient_cycle` (arrays over ``times``).
+
+    ``h_c``, ``h_min`` [m], ``p_max`` [Pa]; ``H0``, ``H_c``, ``H_min`` in the reference scaling
+    (H = h R_r/b_r^2); ``converged`` per instant; ``records`` the convergence record of every
+    instant (the first: the steady start); ``X`` the grid (x = X b_r) and, if asked for, ``P``
+    and ``H`` (one row per instant).
+    """
+
+    times: np.ndarray
+    h_c: np.ndarray
+    h_min: np.ndarray
+    p_max: np.ndarray
+    H0: np.ndarray
+    converged: np.ndarray
+    records: tuple
+    scaling: TransientScaling
+    scheme: str
+    X: np.ndarray
+    P: np.ndarray | None = None
+    H: np.ndarray | None = None
+    wall_time: float = 0.0
+
+    @property
+    def H_c(self) -> np.ndarray:
+        return self.h_c / self.scaling.h_scale
+
+    @property
+    def H_min(self) -> np.ndarray:
+        return self.h_min / self.scaling.h_scale
+
+    def to_frame(self):
+        """pandas DataFrame, one row per instant."""
+        import pandas as pd
+
+        return pd.DataFrame({
+            "time [s]": self.times, "h_c [m]": self.h_c, "h_min [m]": self.h_min, "p_max [Pa]": self.p_max,
+            "H0 [-]": self.H0, "converged": self.converged,
+            "cycles": [r.cycles for r in self.records],
+        })
+
+
+# ----------------------------------------------------------------------------- the hierarchy
+class _TransientHierarchy(_Solver):
+    """The steady solver's level hierarchy and buffers, cycling the transient operator."""
+
+    def __init__(self, problem, levels, settings, compiled):
+        super().__init__(problem, levels, settings, compiled)
+        self.base_parabola = self.parabola.copy()
+        self.curvature = 1.0
+        self.s = 1.0
+        self.c_t = 0.0
+        self.transient_cycle = (_transient_kernels.compiled("transient_fas_cycle") if compiled
+                                else _transient_kernels.transient_fas_cycle)
+        self.transient_residual = (_transient_kernels.compiled("transient_residual") if compiled
+                                   else _transient_kernels.transient_residual)
+
+    def set_conditions(self, curvature: float, s: float, c_t: float) -> None:
+        self.curvature, self.s, self.c_t = float(curvature), float(s), float(c_t)
+        np.multiply(self.base_parabola, self.curvature, out=self.parabola)
+        self.dry_all[:] = False
+        self.dry = {}
+
+    def film(self, level, P, H0):
+        parabola = self.curvature * level.parabola
+        if not self.problem.elastic:
+            return H0 + parabola
+        return H0 + parabola - level.deform(P) / math.pi
+
+    def residual(self, level, P, H):
+        out = np.empty(level.n)
+        self.transient_residual(P, H, level.h, self.lam, self.viscosity_code, self.density_code, self.params,
+                                self.s, self.c_t, out)
+        return out
+
+    def cycle(self, k, P, H0, f, f_load, kind=None):
+        kind = kind or self.settings.cycle
+        key = (k, kind)
+        schedule = self._schedules.get(key)
+        if schedule is None:
+            schedule = self._schedules[key] = _fas_kernels.cycle_schedule(k, kind, self.settings.cycle_coarsest - 1)
+        o, n = int(self.offsets[k]), int(self.n_of[k])
+        self.P_all[o:o + n] = P
+        self.f_all[o:o + n] = f
+        self.H0s[k], self.loads[k] = H0, f_load
+        self.work += self.transient_cycle(
+            schedule, self.P_all, self.P_old, self.f_all, self.H0s, self.loads, self.dry_all, self.n_of,
+            self.offsets, self.h_of, self.parabola, self.K_local, self.mlmi_on, self.m_of, self.c1s, self.c2s,
+            _kernels.INTERP6, DIRECT_BELOW, self.K_dense, self.lam, self.viscosity_code, self.density_code,
+            self.params, self.problem.elastic, self.real_settings, self.int_settings, self.s, self.c_t,
+        )
+        return self.P_all[o:o + n].copy(), float(self.H0s[k])
+
+
+# ----------------------------------------------------------------------------- the marcher
+#: the coarsest grid of the cycles has at most this spacing (units of b_r); the steady default
+#: [-4, 1.5] has 0.39 on its 15-node grid. A coarser one (wide domains: reversal, squeeze) slows
+#: the H0 correction: measured convergence factor 0.3 per cycle with a spacing of 1.7 on a rigid
+#: squeeze film, 0.01 with 0.43.
+COARSEST_SPACING = 0.45
+
+
+def coarsest_level(domain) -> int:
+    """The first level whose spacing is at most :data:`COARSEST_SPACING` (the cycles' coarsest)."""
+    width = float(domain[1] - domain[0])
+    level = 1
+    while width / (14 * 2 ** (level - 1)) > COARSEST_SPACING:
+        level += 1
+    return level
+
+
+class TransientLineSolver:
+    """Implicit time march of the transient line contact in a fixed reference scaling.
+
+    Parameters
+    ----------
+    scaling : TransientScaling
+        The reference (its ``problem.domain`` is the grid's domain in units of b_r).
+    levels : int
+        Finest grid level (n = 14 2^(levels-1) + 1 nodes over the domain).
+    scheme : str
+        ``"bdf2"`` (default; variable-step BDF2, BDF1 on the first step) or ``"bdf1"``.
+    tolerance : float
+        Per step: stop when the change of H_min and H0 between cycles falls below it and the
+        load error below ten times it (reference scaling).
+    settings : MultigridSettings, optional
+        Cycle settings; a step that fails is retried with :data:`~.line_multigrid.ROBUST`.
+        Default: the steady defaults with the cycles' coarsest level from :func:`coarsest_level`.
+    strict : bool
+        Raise ConvergenceError for a non-converged step instead of warning.
+    compiled : bool
+        numba kernels (False: the plain-Python twins, slow; for tests).
+    keep_fields : bool
+        Keep P and H of every step in the returned :class:`TransientStep`.
+    """
+
+    def __init__(self, scaling: TransientScaling, levels: int = 8, *, scheme: str = "bdf2", tolerance: float = 1e-6,
+                 settings: MultigridSettings | None = None, strict: bool = False, compiled: bool = True,
+                 keep_fields: bool = False):
+        if not (isinstance(levels, (int, np.integer)) and 2 <= levels <= 16):
+            raise InputError(f"transient EHL: levels = {levels!r}; allowed 2..16")
+        if scheme not in SCHEMES:
+            raise InputError(f"transient EHL: scheme = {scheme!r}; allowed: {', '.join(SCHEMES)}")
+        if not (tolerance > 0 and math.isfinite(tolerance)):
+            raise InputError(f"transient EHL: tolerance = {tolerance!r} must be finite and > 0")
+        self.scaling = scaling
+        self.problem = scaling.problem
+        self.levels = int(levels)
+        self.scheme = scheme
+        self.tolerance = float(tolerance)
+        if settings is None:
+            settings = MultigridSettings(cycle_coarsest=min(coarsest_level(scaling.problem.domain), int(levels) - 1))
+        self.settings = settings
+        self.ladder = [self.settings] + [c for c in (attrs.evolve(self.settings, **r) for r in ROBUST)
+                                         if c != self.settings]
+        self.strict = strict
+        self.compiled = compiled
+        self.keep_fields = keep_fields
+        self._hierarchies: dict = {}
+        first = self._hierarchy(self.settings)
+        self.X = first.levels[-1].X.copy()
+        self.n = self.X.size
+        # state: P, H0 and the history of q = rho H (last two) with their time steps
+        self.time: float | None = None
+        self.P: np.ndarray | None = None
+        self.H0 = 0.0
+        self.q_history: list[np.ndarray] = []
+        self.dt_previous: float | None = None
+
+    def _hierarchy(self, settings, mirrored: bool = False) -> _TransientHierarchy:
+        """The level hierarchy of ``settings``; ``mirrored``: of the domain reflected about X = 0
+        (solves with u_m < 0 run there, so that the sweeps follow the flow)."""
+        key = (settings, mirrored)
+        hierarchy = self._hierarchies.get(key)
+        if hierarchy is None:
+            problem = self.problem
+            if mirrored:
+                problem = attrs.evolve(problem, domain=(-problem.domain[1], -problem.domain[0]))
+            hierarchy = self._hierarchies[key] = _TransientHierarchy(problem, self.levels, settings, self.compiled)
+        return hierarchy
+
+    # ------------------------------------------------------------------ conditions
+    def _conditions(self, w: float, R: float, u_m: float) -> tuple[float, float, float]:
+        for name, value, positive in (("w", w, True), ("R", R, True), ("u_m", u_m, False)):
+            if not math.isfinite(value) or (positive and not value > 0):
+                raise InputError(f"transient EHL: {name} = {value!r} must be finite" + (" and > 0" if positive else ""))
+        sc = self.scaling
+        return sc.R / R, u_m / sc.u, 0.5 * math.pi * (w / sc.w - 1.0)
+
+    def film(self, P: np.ndarray, H0: float, R: float) -> np.ndarray:
+        hierarchy = self._hierarchy(self.settings)
+        hierarchy.curvature = self.scaling.R / R
+        return hierarchy.film(hierarchy.levels[-1], P, H0)
+
+    def density(self, P: np.ndarray) -> np.ndarray:
+        return self.problem.density_ratio(P)
+
+    # ------------------------------------------------------------------ starts
+    def set_state(self, time_: float, P: np.ndarray, H0: float, R: float) -> None:
+        """Start the march from a given state on this solver's grid (``X``): P (p/p_r), H0, radius R [m]."""
+        P = np.asarray(P, dtype=float)
+        if P.shape != (self.n,) or not np.all(np.isfinite(P)) or not math.isfinite(H0):
+            raise InputError(f"transient EHL: initial P must be {self.n} finite values and H0 finite")
+        if not math.isfinite(time_):
+            raise InputError(f"transient EHL: initial time {time_!r} must be finite")
+        self.P = np.maximum(P, 0.0)
+        self.P[0] = self.P[-1] = 0.0
+        self.H0 = float(H0)
+        self.time = float(time_)
+        H = self.film(self.P, self.H0, R)
+        self.q_history = [self.density(self.P) * H]
+        self.dt_previous = None
+
+    def steady_start(self, time_: float, w: float, R: float, u_m: float) -> TransientStep:
+        """Start from the steady solution of the instant (needs u_m != 0).
+
+        Solved with :func:`solve_multigrid` in the instant's own Hertz scaling (mirrored when
+        u_m < 0), mapped onto the reference grid and converged there with the steady
+        (c_t = 0) operator.
+        """
+        curvature, s, f_load = self._conditions(w, R, u_m)
+        if u_m == 0.0:
+            raise InputError("transient EHL: the steady start needs u_m != 0 at the first instant "
+                             "(give an initial state with set_state instead)")
+        sc = self.scaling
+        own = LineEHLProblem.from_contact(R=R, w=w, E_reduced=sc.E_reduced, u_m=abs(u_m), eta0=sc.eta0,
+                                          alpha=sc.alpha, z=self.problem.z, viscosity=self.problem.viscosity,
+                                          density=self.problem.density, p0=self.problem.p0,
+                                          elastic=self.problem.elastic)
+        b0 = math.sqrt(8.0 * w * R / (math.pi * sc.E_reduced))
+        sigma = 1.0 if u_m > 0 else -1.0
+        xa, xb = self.problem.domain
+        lo, hi = sorted((sigma * xa * sc.b / b0, sigma * xb * sc.b / b0))
+        own = attrs.evolve(own, domain=(min(lo, -1.5), max(hi, 1.2)))
+        start = time.perf_counter()
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ConvergenceWarning)
+            steady = solve_multigrid(own, self.levels, tolerance=min(self.tolerance, 1e-7))
+        p_own = 2.0 * w / (math.pi * b0)
+        P = np.interp(sigma * self.X * sc.b / b0, steady.X, steady.P, left=0.0, right=0.0) * p_own / sc.p_h
+        P[0] = P[-1] = 0.0
+        H_c = steady.H_c * (b0 * b0 / R) / sc.h_scale
+        H_rel = self.film(P, 0.0, R)
+        H0 = H_c - float(np.interp(0.0, self.X, H_rel))
+        step = self._solve(P, H0, curvature, s, 0.0, np.zeros(self.n), f_load, start, "steady start")
+        self.P, self.H0, self.time = step[0], step[1], float(time_)
+        H = step[2]
+        self.q_history = [self.density(self.P) * H]
+        self.dt_previous = None
+        return self._report(time_, H, step[3])
+
+    # ------------------------------------------------------------------ time step
+    def step(self, time_: float, w: float, R: float, u_m: float) -> TransientStep:
+        """Advance to ``time_`` [s] with load w [N/m], radius R [m] and entrainment speed u_m [m/s]."""
+        if self.P is None:
+            raise InputError("transient EHL: start the march first (steady_start or set_state)")
+        dt = float(time_) - self.time
+        if not (dt > 0 and math.isfinite(dt)):
+            raise InputError(f"transient EHL: times must increase; step to {time_!r} from {self.time!r}")
+        curvature, s, f_load = self._conditions(w, R, u_m)
+        dT = dt / self.scaling.time_scale
+        if self.scheme == "bdf1" or len(self.q_history) < 2 or self.dt_previous is None:
+            a0, history = 1.0, -self.q_history[-1]
+        else:
+            omega = dt / self.dt_previous
+            a0 = (1.0 + 2.0 * omega) / (1.0 + omega)
+            history = -(1.0 + omega) * self.q_history[-1] + omega * omega / (1.0 + omega) * self.q_history[-2]
+        f = history / dT
+        f[0] = f[-1] = 0.0
+        start = time.perf_counter()
+        P, H0, H, record = self._solve(self.P, self.H0, curvature, s, a0 / dT, f, f_load, start,
+                                       f"t = {time_:.6g} s")
+        self.P, self.H0 = P, H0
+        self.q_history = [self.q_history[-1], self.density(P) * H]
+        self.dt_previous = dt
+        self.time = float(time_)
+        return self._report(time_, H, record)
+
+    def _report(self, time_, H, record) -> TransientStep:
+        sc = self.scaling
+        return TransientStep(
+            time=float(time_), h_c=float(np.interp(0.0, self.X, H)) * sc.h_scale, h_min=float(H.min()) * sc.h_scale,
+            p_max=float(self.P.max()) * sc.p_h, H0=self.H0, record=record,
+            P=self.P.copy() if self.keep_fields else None, H=H.copy() if self.keep_fields else None,
+        )
+
+    def _solve(self, P, H0, curvature, s, c_t, f, f_load, start, label):
+        """Converge one instant; the robustness ladder on failure; warn/raise when not converged."""
+        if c_t == 0.0 and s == 0.0:
+            raise InputError("transient EHL: u_m = 0 without a time step has no solution")
+        tried = []
+        kept = None
+        # reversed flow (s < 0) is solved on the mirrored grid with s > 0: the Gauss-Seidel sweeps
+        # and the distributive dipoles of the relaxation then run in the direction of the flow
+        # (measured: sweeping against the flow diverges a few steps after a reversal)
+        mirrored = s < 0.0
+        flip = (lambda a: a[::-1].copy()) if mirrored else (lambda a: a.copy())
+        for settings in self.ladder:
+            hierarchy = self._hierarchy(settings, mirrored)
+            hierarchy.set_conditions(curvature, abs(s), c_t)
+            try:
+                result = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
+                result = (flip(result[0]), result[1], flip(result[2]), result[3])
+            except ConvergenceError as exc:
+                tried.append(f"{_describe(settings, self.settings)} failed ({exc})")
+                continue
+            if result[3].converged:
+                kept = result
+                break
+            tried.append(f"{_describe(settings, self.settings)} did not converge ({result[3].message})")
+            if kept is None or result[3].residuals[-1] < kept[3].residuals[-1]:
+                kept = result
+        if kept is None:
+            raise ConvergenceError(f"transient line EHL ({label}): every attempt diverged: " + "; ".join(tried))
+        P_new, H0_new, H, record = kept
+        message = "; ".join(tried + ([record.message] if record.message else []))
+        record = attrs.evolve(record, message=message, wall_time=time.perf_counter() - start)
+        if not record.converged:
+            text = f"transient line EHL ({label}, {self.n} nodes): not converged: {message}"
+            if self.strict:
+                raise ConvergenceError(text, record)
+            warnings.warn(text, ConvergenceWarning, stacklevel=3)
+        return P_new, H0_new, H, record
+
+    def _cycles(self, hierarchy, P, H0, f, f_load):
+        settings = hierarchy.settings
+        finest = hierarchy.levels[-1]
+        k = len(hierarchy.levels) - 1
+        tol = self.tolerance
+        residuals, loads, works = [], [], []
+        changes, boundaries = [], []
+        frozen_at = 0
+        message = ""
+        converged = False
+        previous = None
+        work0 = hierarchy.work
+        for _ in range(settings.max_cycles):
+            P, H0 = hierarchy.cycle(k, P, H0, f, f_load)
+            H = hierarchy.film(finest, P, H0)
+            if not (np.all(np.isfinite(P)) and np.all(np.isfinite(H)) and math.isfinite(H0)):
+                raise ConvergenceError("non-finite state")
+            r = hierarchy.residual(finest, P, H) - f
+            r[0] = r[-1] = 0.0
+            r = np.where(P > 0.0, r, np.maximum(r, 0.0))
+            residuals.append(float(np.mean(np.abs(r[1:-1])) * finest.h))
+            loads.append(hierarchy.load(finest, P) - f_load)
+            works.append(hierarchy.work - work0)
+            current = (float(H.min()), H0)
+            wet = np.flatnonzero(P > 0.0)
+            boundaries.append(int(wet[-1]) if wet.size else -1)
+            if previous is not None:
+                change = max(abs(current[0] - previous[0]), abs(current[1] - previous[1]))
+                changes.append(current[0] - previous[0])
+                if change < tol and abs(loads[-1]) < 10.0 * tol:
+                    converged = True
+                    break
+                if _stagnated(residuals[frozen_at:]):
+                    message = (message + "; " if message else "") + "stagnated"
+                    break
+                if not hierarchy.dry and _alternating(changes) and len(set(boundaries[-3:])) > 1:
+                    hierarchy.freeze_dry(P)
+                    frozen_at = len(residuals)
+                    message = f"cavitation set frozen after cycle {len(residuals)}"
+            previous = current
+        else:
+            message = (message + "; " if message else "") + f"no convergence to {tol:g} in {settings.max_cycles} cycles"
+        record = ConvergenceRecord(
+            method=f"transient FAS multigrid ({self.scheme}), {settings.cycle}-cycles",
+            levels=len(hierarchy.levels), nodes=finest.n, residuals=tuple(residuals), load_errors=tuple(loads),
+            work_units=tuple(works), wall_time=0.0, converged=converged, message=message, tolerance=tol,
+        )
+        return P, H0, H, record
+
+
+# ----------------------------------------------------------------------------- cam-cycle driver
+def automatic_transient_domain(u_m: np.ndarray) -> tuple[float, float]:
+    """[X_a, X_b] in units of b_r: (-4, 1.5) if u_m >= 0 throughout, (-1.5, 4) if <= 0, else (-4, 4)."""
+    if np.all(u_m >= 0.0):
+        return (-4.0, 1.5)
+    if np.all(u_m <= 0.0):
+        return (-1.5, 4.0)
+    return (-4.0, 4.0)
+
+
+def _as_series(name, value, n):
+    array = np.asarray(value, dtype=float)
+    if array.ndim == 0:
+        array = np.full(n, float(array))
+    if array.shape != (n,):
+        raise InputError(f"transient_cycle: {name} must be a scalar or have the length of times ({n}), "
+                         f"got shape {array.shape}")
+    if not np.all(np.isfinite(array)):
+        raise InputError(f"transient_cycle: {name} has non-finite values")
+    return array
+
+
+def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: float, z: float | None = None,
+                    viscosity: str = "roelands", density: str = "dowson_higginson", p0: float = ROELANDS_P0,
+                    elastic: bool = True, levels: int = 8, scheme: str = "bdf2", tolerance: float = 1e-6,
+                    reference: dict | None = None, domain: tuple | None = None,
+                    settings: MultigridSettings | None = None, initial: tuple | None = None,
+                    keep_fields: bool = False, strict: bool = False, compiled: bool = True) -> TransientLineResult:
+    """Transient line-contact films over a sequence of instants (e.g. a cam cycle).
+
+    Parameters
+    ----------
+    times : array [s]
+        Strictly increasing instants (steps may vary; BDF2 uses variable-step coefficients).
+    w : array or float [N/m]
+        Load per unit length (> 0) at each instant.
+    R : array or float [m]
+        Reduced radius of curvature (> 0) at each instant.
+    u_m : array or float [m/s]
+        Signed entrainment speed (u1 + u2)/2; may pass through zero and change sign. The first
+        instant needs u_m != 0 unless ``initial`` is given.
+    E_reduced : float [Pa]
+        E' = 2/[(1-nu1^2)/E1 + (1-nu2^2)/E2].
+    eta0 [Pa*s], alpha [1/Pa], z, viscosity, density, p0 [Pa]
+        Lubricant: ``"roelands"`` (z defaults to alpha p0/(ln eta0 + 9.67)) or ``"barus"``;
+        ``"dowson_higginson"`` or ``"incompressible"``.
+    elastic : bool
+        False: rigid surfaces.
+    levels : int
+        Finest grid level (8: 1793 nodes).
+    scheme : ``"bdf2"`` or ``"bdf1"``
+    tolerance : float
+        Per-step convergence tolerance (reference scaling).
+    reference : dict, optional
+        ``{"w": ..., "R": ..., "u": ...}`` (SI); default: w and R of the instant with the
+        largest Hertz half-width, u = max |u_m|.
+    domain : (float, float), optional
+        [X_a, X_b] in units of b_r; default :func:`automatic_transient_domain`.
+    initial : (P, H0), optional
+        Start state on the reference grid (P = p/p_r at the nodes, H0) instead of the steady start.
+    keep_fields : bool
+        Return P and H at every instant.
+    strict : bool
+        Raise ConvergenceError at the first non-converged step (default: one ConvergenceWarning
+        listing them).
+
+    Returns
+    -------
+    TransientLineResult
+    """
+    start = time.perf_counter()
+    times = np.asarray(times, dtype=float)
+    if times.ndim != 1 or times.size < 1 or not np.all(np.isfinite(times)):
+        raise InputError("transient_cycle: times must be a non-empty 1-D array of finite values [s]")
+    if times.size > 1 and not np.all(np.diff(times) > 0):
+        raise InputError("transient_cycle: times must be strictly increasing")
+    n = times.size
+    w = _as_series("w", w, n)
+    R = _as_series("R", R, n)
+    u_m = _as_series("u_m", u_m, n)
+    if not np.all(w > 0):
+        raise InputError(f"transient_cycle: w must be > 0 N/m at every instant (min {w.min()!r})")
+    if not np.all(R > 0):
+        raise InputError(f"transient_cycle: R must be > 0 m at every instant (min {R.min()!r})")
+    if not np.any(u_m != 0.0) and initial is None:
+        raise InputError("transient_cycle: u_m = 0 at every instant: give an initial state")
+    for name, value in (("E_reduced", E_reduced), ("eta0", eta0)):
+        if not (math.isfinite(value) and value > 0):
+            raise InputError(f"transient_cycle: {name} = {value!r} must be finite and > 0")
+    if reference is None:
+        widths = w * R
+        j = int(np.argmax(widths))
+        reference = {"w": float(w[j]), "R": float(R[j]), "u": float(np.abs(u_m).max())}
+    if domain is None:
+        domain = automatic_transient_domain(u_m)
+    scaling = TransientScaling.from_reference(R=reference["R"], w=reference["w"], u=reference["u"],
+                                              E_reduced=E_reduced, eta0=eta0, alpha=alpha, z=z, viscosity=viscosity,
+                                              density=density, p0=p0, elastic=elastic, domain=tuple(domain))
+    solver = TransientLineSolver(scaling, levels, scheme=scheme, tolerance=tolerance, settings=settings,
+                                 strict=strict, compiled=compiled, keep_fields=keep_fields)
+    steps = []
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", ConvergenceWarning)
+        if initial is None:
+            steps.append(solver.steady_start(times[0], w[0], R[0], u_m[0]))
+        else:
+            solver.set_state(times[0], initial[0], initial[1], R[0])
+            H = solver.film(solver.P, solver.H0, R[0])
+            empty = ConvergenceRecord(method="given initial state", levels=levels, nodes=solver.n, residuals=(),
+                                      load_errors=(), work_units=(), wall_time=0.0, converged=True)
+            steps.append(solver._report(times[0], H, empty))
+        for i in range(1, n):
+            steps.append(solver.step(times[i], w[i], R[i], u_m[i]))
+    others = [c for c in caught if not issubclass(c.category, ConvergenceWarning)]
+    for c in others:
+        warnings.warn_explicit(c.message, c.category, c.filename, c.lineno)
+    converged = np.array([s.record.converged for s in steps])
+    if not converged.all():
+        bad = np.flatnonzero(~converged)
+        warnings.warn(f"transient line EHL: {bad.size} of {n} instants not converged (indices "
+                      f"{', '.join(map(str, bad[:10]))}{', ...' if bad.size > 10 else ''}); see the records",
+                      ConvergenceWarning, stacklevel=2)
+    return TransientLineResult(
+        times=times, h_c=np.array([s.h_c for s in steps]), h_min=np.array([s.h_min for s in steps]),
+        p_max=np.array([s.p_max for s in steps]), H0=np.array([s.H0 for s in steps]), converged=converged,
+        records=tuple(s.record for s in steps), scaling=scaling, scheme=scheme, X=solver.X,
+        P=np.array([s.P for s in steps]) if keep_fields else None,
+        H=np.array([s.H for s in steps]) if keep_fields else None, wall_time=time.perf_counter() - start,
+    )
