@@ -45,13 +45,13 @@ from __future__ import annotations
 
 import math
 import time
-import warnings
 
 import attrs
 import numpy as np
 
-from ..errors import ConvergenceError, ConvergenceWarning, InputError
+from ..errors import ConvergenceError, InputError
 from . import _fas_kernels, _kernels
+from .attempts import run_ladder
 from .deformation import DIRECT_BELOW, Deformation
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
 from .line_solution import ConvergenceRecord, LineEHLSolution
@@ -265,52 +265,9 @@ def solve_multigrid(
     if not (isinstance(levels, (int, np.integer)) and 1 <= levels <= 16):
         raise InputError(f"solve_multigrid: levels = {levels!r}; allowed 1..16")
     settings = settings or MultigridSettings()
-    ladder = [settings] + [candidate for candidate in (attrs.evolve(settings, **r) for r in ROBUST)
-                           if candidate != settings]
-    start = time.perf_counter()
-    tried: list[str] = []
-    kept = None
-    last_record = None
-    for attempt in ladder:
-        try:
-            solution = _solve_once(problem, levels, tolerance, attempt, initial, compiled)
-        except ConvergenceError as exc:
-            last_record = exc.record
-            tried.append(f"{_describe(attempt, settings)} failed ({str(exc).split(': ', 1)[-1]})")
-            continue
-        if solution.record.converged:
-            kept = solution
-            break
-        tried.append(f"{_describe(attempt, settings)} did not converge ({solution.record.message})")
-        if kept is None or solution.record.residuals[-1] < kept.record.residuals[-1]:
-            kept = solution
-    if kept is None:
-        raise ConvergenceError(
-            f"line EHL multigrid (M = {problem.M:.4g}, L = {problem.L:.4g}): every attempt diverged: " + "; ".join(tried),
-            last_record,
-        )
-    if not tried:
-        return kept
-    note = "; ".join(tried) + ("" if kept.record.converged else "; kept the smallest residual")
-    if kept.record.converged:
-        note += f"; converged with {_describe(kept.settings, settings)}"
-    if kept.record.message:
-        note += f" ({kept.record.message})"
-    record = attrs.evolve(kept.record, message=note, wall_time=time.perf_counter() - start)
-    kept = attrs.evolve(kept, record=record)
-    if not kept.record.converged:
-        text = f"line EHL multigrid (M = {problem.M:.4g}, L = {problem.L:.4g}, {kept.X.size} nodes): {record.message}"
-        if strict:
-            raise ConvergenceError(text, record)
-        warnings.warn(text, ConvergenceWarning, stacklevel=2)
-    return kept
-
-
-def _describe(attempt: MultigridSettings, given: MultigridSettings) -> str:
-    """'the given settings' or the fields in which an attempt differs from them."""
-    changes = {name: getattr(attempt, name) for name in attrs.fields_dict(MultigridSettings)
-               if getattr(attempt, name) != getattr(given, name)}
-    return "the given settings" if not changes else "settings " + ", ".join(f"{k}={v}" for k, v in changes.items())
+    return run_ladder(settings, ROBUST, lambda attempt: _solve_once(problem, levels, tolerance, attempt, initial, compiled),
+                      f"line EHL multigrid (M = {problem.M:.4g}, L = {problem.L:.4g})", strict=strict,
+                      size=f"{grid_points(levels)} nodes")
 
 
 def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> LineEHLSolution:

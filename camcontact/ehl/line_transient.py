@@ -70,7 +70,8 @@ import numpy as np
 from ..errors import ConvergenceError, ConvergenceWarning, InputError
 from . import _fas_kernels, _kernels, _transient_kernels
 from .deformation import DIRECT_BELOW
-from .line_multigrid import ROBUST, MultigridSettings, _alternating, _describe, _Solver, _stagnated, solve_multigrid
+from .attempts import describe_settings
+from .line_multigrid import ROBUST, MultigridSettings, _alternating, _Solver, _stagnated, solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
 
@@ -439,12 +440,12 @@ class TransientLineSolver:
                 result = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
                 result = (flip(result[0]), result[1], flip(result[2]), result[3])
             except ConvergenceError as exc:
-                tried.append(f"{_describe(settings, self.settings)} failed ({exc})")
+                tried.append(f"{describe_settings(settings, self.settings)} failed ({exc})")
                 continue
             if result[3].converged:
                 kept = result
                 break
-            tried.append(f"{_describe(settings, self.settings)} did not converge ({result[3].message})")
+            tried.append(f"{describe_settings(settings, self.settings)} did not converge ({result[3].message})")
             if kept is None or result[3].residuals[-1] < kept[3].residuals[-1]:
                 kept = result
         if kept is None:

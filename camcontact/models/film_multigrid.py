@@ -17,7 +17,21 @@ from ..registry import builtin
 from .base import FilmModel
 from .film_line import LINE_INPUTS, moes_line_film
 
-__all__ = ["Multigrid", "automatic_domain"]
+__all__ = ["Multigrid", "automatic_domain", "solver_laws"]
+
+
+def solver_laws(model: str, lubricant_state, density_law) -> tuple[str, str]:
+    """(viscosity, density) law names of the numerical solvers from a lubricant state, or an
+    InputError naming the law they do not support (they know roelands/barus and
+    dowson_higginson/incompressible)."""
+    viscosity = getattr(getattr(lubricant_state, "pressure_law", None), "name", "roelands")
+    if viscosity not in ("roelands", "barus"):
+        raise InputError(f"film model {model!r} supports the barus and roelands laws, not {viscosity!r}")
+    density = getattr(density_law, "name", density_law)
+    if density not in ("dowson_higginson", "incompressible"):
+        raise InputError(f"film model {model!r} supports the dowson_higginson and incompressible density "
+                         f"laws, not {density!r}")
+    return viscosity, density
 
 
 def automatic_domain(M: float, L: float, elastic: bool = True) -> tuple[float, float]:
@@ -91,13 +105,7 @@ class Multigrid(FilmModel):
         from ..ehl.line_problem import LineEHLProblem
 
         law = getattr(lubricant_state, "pressure_law", None)
-        viscosity = getattr(law, "name", "roelands")
-        if viscosity not in ("roelands", "barus"):
-            raise InputError(f"film model 'multigrid' supports the barus and roelands laws, not {viscosity!r}")
-        density = getattr(density_law, "name", density_law)
-        if density not in ("dowson_higginson", "incompressible"):
-            raise InputError(f"film model 'multigrid' supports the dowson_higginson and incompressible density "
-                             f"laws, not {density!r}")
+        viscosity, density = solver_laws(self.name, lubricant_state, density_law)
         if density == "dowson_higginson" and law is not None:
             constants = getattr(lubricant_state.density_law, "a", 5.9e8), getattr(lubricant_state.density_law, "b", 1.34)
             if constants != (5.9e8, 1.34):

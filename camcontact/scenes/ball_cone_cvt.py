@@ -15,7 +15,8 @@ A :class:`~camcontact.components.LoadedBallConeCVT` becomes the steps
     exact elliptic integrals or the thesis's m, n table (model slot ``hertz``);
 ``film``
     the EHL film of each contact by a point-contact film model (slot ``film``, default
-    ``"hamrock_dowson"``), pure rolling at the rolling speed; Lambda with the roughness;
+    ``"hamrock_dowson"``; ``"multigrid"`` is the numerical point-contact solution), pure rolling at
+    the rolling speed; Lambda with the roughness;
 ``traction``
     FASTSIM (Kalker's simplified theory) on the contact ellipse with the contact's spin: the
     longitudinal creepage that transmits F_t, the slip share of the area, the traction regime
@@ -145,8 +146,12 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
         return {"Rx": Rx, "Ry": r, "a_rolling": contact.a_x, "a_transverse": contact.a_y, "p_h": contact.p_max,
                 "approach": contact.approach, "pressure_check": check}
 
-    film_model = registry.get("film_models", models.get("film", "hamrock_dowson"), requires=POINT_INPUTS,
-                              provides=("h_c", "h_min"))
+    film_spec = models.get("film", "hamrock_dowson")
+    film_spec = "multigrid_point" if film_spec == "multigrid" else film_spec  # the numerical film of a point contact
+    film_model = registry.get("film_models", film_spec, requires=POINT_INPUTS, provides=("h_c", "h_min"))
+    if getattr(film_model, "geometry", "point") != "point":
+        raise InputError(f"ball_cone_cvt scene: film model {film_model.name!r} is for {film_model.geometry} contacts; "
+                         "the ball-cone contact needs a point model (hamrock_dowson, nijenbanning, multigrid)")
     piezo = "piezoviscosity" in effects
 
     def run_film(s):
@@ -154,7 +159,8 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
         for side in SIDES:
             produced = film_model({"Rx": s["Rx"], "Ry": s["Ry"], "F": s["normal_force"], "E_reduced": s["E_reduced"],
                                    "u_m": s[f"rolling_speed_{side}"], "eta0": s["eta0"],
-                                   "alpha": s["alpha"] if piezo else 0.0})
+                                   "alpha": s["alpha"] if piezo else 0.0, "lubricant_state": s["lubricant_state"],
+                                   "density_law": s["density_law"]})
             out[f"h_c_{side}"], out[f"h_min_{side}"] = float(produced["h_c"]), float(produced["h_min"])
         return out
 
@@ -208,7 +214,8 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
              ("Rx", "Ry", "a_rolling", "a_transverse", "p_h", "approach", "pressure_check"), run_hertz,
              model=f"hertz_elliptical ({hertz_method})"),
         lubricant_step(cvt.lubricant, frozenset(), piezo),
-        Step("film", ("Rx", "Ry", "normal_force", "E_reduced", *per_side("rolling_speed"), "eta0", "alpha"),
+        Step("film", ("Rx", "Ry", "normal_force", "E_reduced", *per_side("rolling_speed"), "eta0", "alpha",
+                      "lubricant_state", "density_law"),
              (*per_side("h_c"), *per_side("h_min")), run_film, model=film_model.name, identity=id(film_model)),
         Step("lambda", (*per_side("h_min"), "sigma"), per_side("Lambda"), run_lambda),
         Step("traction", ("a_rolling", "a_transverse", "normal_force", "traction_coefficient", "shear_modulus",
