@@ -17,6 +17,13 @@ choice.
     python benchmarks/accuracy_vs_time.py --cam           # the cam cycle: quasi-steady vs transient
     python benchmarks/accuracy_vs_time.py --cam --quick   # 4-degree steps, level 5 (the tests run this)
 
+``--point`` does the same for circular point contacts: the numerical solution on 65^2 .. 513^2
+(levels 3-6; incompressible, Roelands) against the finest level, and the Nijenbanning–Venner–Moes
+and Hamrock–Dowson formulas against it, with the wall time of each, into ``accuracy_vs_time_point.csv``.
+
+    python benchmarks/accuracy_vs_time.py --point         # M 10, 20, 50, 100 x L 5, 10; levels 3-6
+    python benchmarks/accuracy_vs_time.py --point --quick # M 20 x L 10; levels 3-4 (the tests run this)
+
 ``--cam`` measures the LS-1 cam with a flat-faced follower at 1000 rpm (entrainment reversal at the
 nose) over one turn in 0.5-degree steps (720 instants): the quasi-steady Pan–Hamrock formula, the
 quasi-steady multigrid film at levels 6-8 and the transient multigrid film with the squeeze term
@@ -182,6 +189,51 @@ def plot(frame: pd.DataFrame, path: Path) -> None:
     plt.close(fig)
 
 
+def point_rows(Ms, Ls, levels, repeats: int) -> pd.DataFrame:
+    """Point contacts (D = 1): multigrid levels against the finest, formulas against it, and their cost."""
+    from camcontact.ehl.point_multigrid import solve_point_multigrid
+    from camcontact.ehl.point_problem import PointEHLProblem, point_grid_points
+    from camcontact.models.film_point import nijenbanning_film
+
+    def hamrock_dowson(M, L, speed_group=1e-11):  # Moes scaling at 2U = 1e-11 (its weak 2U dependence)
+        U, W, G = speed_group / 2, M * speed_group**0.75, L * speed_group**-0.25
+        k = 1.03
+        h_min = 3.63 * U**0.68 * G**0.49 * W**-0.073 * (1 - math.exp(-0.68 * k))
+        h_c = 2.69 * U**0.67 * G**0.53 * W**-0.067 * (1 - 0.61 * math.exp(-0.73 * k))
+        return h_c / math.sqrt(speed_group), h_min / math.sqrt(speed_group)
+
+    rows = []
+    for M in Ms:
+        for L in Ls:
+            problem = PointEHLProblem(M=M, L=L, density="incompressible")
+            results = {}
+            for level in levels:
+                times, solution = [], None
+                for _ in range(repeats):
+                    start = time.perf_counter()
+                    with warnings.catch_warnings():
+                        warnings.simplefilter("ignore")
+                        solution = solve_point_multigrid(problem, level)
+                    times.append(time.perf_counter() - start)
+                results[level] = (*solution.moes_film(), statistics.median(times), solution.record.converged)
+            ref_c, ref_min = results[max(levels)][:2]
+            for level, (hc, hmin, seconds, converged) in results.items():
+                n = point_grid_points(level)
+                rows.append({"M": M, "L": L, "method": f"multigrid {n}x{n}", "level": level,
+                             "error H_c [%]": 100 * (hc / ref_c - 1), "error H_min [%]": 100 * (hmin / ref_min - 1),
+                             "median time [s]": seconds, "status": "converged" if converged else "not converged"})
+            formulas = {"nijenbanning": (nijenbanning_film(M, L, 1.0), float("nan")),
+                        "hamrock_dowson": hamrock_dowson(M, L)}
+            for name, (hc, hmin) in formulas.items():
+                start = time.perf_counter()
+                for _ in range(100):
+                    nijenbanning_film(M, L, 1.0) if name == "nijenbanning" else hamrock_dowson(M, L)
+                rows.append({"M": M, "L": L, "method": name, "level": np.nan,
+                             "error H_c [%]": 100 * (hc / ref_c - 1), "error H_min [%]": 100 * (hmin / ref_min - 1),
+                             "median time [s]": (time.perf_counter() - start) / 100, "status": "formula"})
+    return pd.DataFrame(rows)
+
+
 def cam_cycle_rows(step_deg: float, levels, repeats: int) -> pd.DataFrame:
     """Quasi-steady formula / quasi-steady multigrid / transient multigrid over the flat-follower LS-1 turn."""
     import attrs
@@ -229,7 +281,14 @@ def main(argv: list[str] | None = None) -> pd.DataFrame:
     parser.add_argument("--repeats", type=int, default=None, help="runs per level (median); default 3, quick 1")
     parser.add_argument("--out", default=str(Path(__file__).parent / "results"), help="output folder")
     parser.add_argument("--cam", action="store_true", help="the cam cycle: quasi-steady versus transient films")
+    parser.add_argument("--point", action="store_true", help="circular point contacts: formulas versus grid levels")
     args = parser.parse_args(argv)
+    if args.point:
+        Ms, Ls, levels = ((20,), (10,), (3, 4)) if args.quick else ((10, 20, 50, 100), (5, 10), (3, 4, 5, 6))
+        frame = point_rows(Ms, Ls, levels, args.repeats or (1 if args.quick else 3))
+        return write_results(frame, args.out, "accuracy_vs_time_point", lambda f, p: None,
+                             lambda f: f.groupby("method")[["error H_c [%]", "error H_min [%]", "median time [s]"]]
+                             .agg(lambda v: v.abs().median()))
     if args.cam:
         step, levels = (4.0, (5,)) if args.quick else (0.5, (6, 7, 8))
         frame = cam_cycle_rows(step, levels, args.repeats or (1 if args.quick else 3))

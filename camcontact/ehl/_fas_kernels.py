@@ -7,7 +7,9 @@ problem on k - 1), ``SOLVE`` k (coarsest grid, exactly) and ``UP`` k (correct le
 k - 1, post-relax) — which the kernel executes over flat per-level buffers. Relaxation, films
 (MLMI or direct), residuals and the coarsest-grid Newton solve (:func:`coarse_newton`) all run
 compiled, so a cycle costs no Python call per level visit (a W-cycle on 8 levels visits the
-coarse grids 255 times). As with :mod:`camcontact.ehl._kernels`, each function is plain Python
+coarse grids 255 times). The kernels take the operator's speed ratio s and squeeze coefficient c_t
+(:mod:`camcontact.ehl._kernels`): s = 1, c_t = 0 for the steady solver, a step's values for the
+transient one (:mod:`camcontact.ehl.line_transient`). As with :mod:`camcontact.ehl._kernels`, each function is plain Python
 that :func:`compiled` hands to numba; the tests run the twins on small grids.
 """
 
@@ -19,7 +21,7 @@ import numpy as np
 from numba.extending import register_jitable
 
 from . import _kernels
-from ._kernels import deformation_direct, law_state, mlmi_apply, relax_hybrid, reynolds_residual
+from ._kernels import deformation_direct, law_state, mlmi_apply, relax_hybrid, reynolds_residual, wedge_weight
 
 __all__ = ["DOWN", "PY", "SOLVE", "UP", "coarse_newton", "compiled", "cycle_schedule", "fas_cycle"]
 
@@ -79,7 +81,8 @@ def solve_dense(A, b):
 
 
 @register_jitable
-def dense_state(P, H0, f, parabola, K_over_pi, h, lam, viscosity_code, density_code, params, elastic, H, L):
+def dense_state(P, H0, f, parabola, K_over_pi, h, lam, viscosity_code, density_code, params, elastic, s, c_t,
+                H, L):
     """Film H and L - f (interior; 0 at the ends) on a grid with the dense deformation matrix K/pi."""
     n = P.shape[0]
     for i in range(n):
@@ -89,7 +92,7 @@ def dense_state(P, H0, f, parabola, K_over_pi, h, lam, viscosity_code, density_c
                 if P[j] != 0.0:
                     value -= K_over_pi[i, j] * P[j]
         H[i] = value
-    reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, L)
+    reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, s, c_t, L)
     for i in range(1, n - 1):
         L[i] -= f[i]
 
@@ -105,7 +108,7 @@ def fischer_burmeister(a, b):
 
 @register_jitable
 def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, h, lam, viscosity_code, density_code, params, elastic,
-                  tolerance, max_iterations):
+                  s, c_t, tolerance, max_iterations):
     """Semi-smooth Newton for the complementarity problem L(P, H0) = f, load = f_load on a small grid.
 
     The coarsest-grid solver of the multigrid cycles: the same method as the dense reference
@@ -113,7 +116,8 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, h, lam, viscosity_code,
     phi(P_i, -s_i (L_i - f_i)) = 0 with s_i = 1/|dL_i/dP_i| per interior node, the trapezoidal
     load balance h sum P - pi/2 = f_load for H0, exact Jacobian, backtracking on
     |phi|^2 + load^2), written with loops so that it compiles; meant for n up to about 100
-    (dense Jacobian; its deformation part is K/pi times a four-diagonal matrix, O(n^2)).
+    (dense Jacobian; its deformation part is K/pi times a five-diagonal matrix, O(n^2): the local
+    band spans i - 2..i + 2 for either flow direction).
 
     Returns (P >= 0, H0, iterations, status): status 0 converged (max |phi| and |load error|
     below ``tolerance``), 1 non-finite Jacobian, 2 singular Newton matrix, 3 line search failed,
@@ -131,8 +135,8 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, h, lam, viscosity_code,
     xi = np.empty(n)
     dxi_dP = np.empty(n)
     dxi_dH = np.empty(n)
-    direct = np.zeros((n, 4))  # dL_i/dP_m at fixed films, m = i - 2 + c
-    dL_dH = np.zeros((n, 4))  # dL_i/dH_m, m = i - 2 + c
+    direct = np.zeros((n, 5))  # dL_i/dP_m at fixed films, m = i - 2 + c
+    dL_dH = np.zeros((n, 5))  # dL_i/dH_m, m = i - 2 + c
     J = np.empty((n, n))
     J_H0 = np.empty(n)
     scale = np.empty(n)
@@ -143,7 +147,7 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, h, lam, viscosity_code,
     rhs = np.empty(m + 1)
     P_new = np.empty(n)
     hh = h * h
-    dense_state(P, H0, f, parabola, K_over_pi, h, lam, viscosity_code, density_code, params, elastic, H, L)
+    dense_state(P, H0, f, parabola, K_over_pi, h, lam, viscosity_code, density_code, params, elastic, s, c_t, H, L)
     status = 4
     iterations = 0
     for _ in range(max_iterations):
@@ -159,7 +163,7 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, h, lam, viscosity_code,
             dxi_dH[j] = 3.0 * r * gap * gap * e / lam
             dxi_dP[j] = xi[j] * (d_r / r - dlog_eta)
         for i in range(n):
-            for c in range(4):
+            for c in range(5):
                 direct[i, c] = 0.0
                 dL_dH[i, c] = 0.0
         for i in range(1, n - 1):
@@ -174,19 +178,22 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, h, lam, viscosity_code,
                 weight = 0.5 * a if q == 0 else (0.5 * (a + c) if q == 1 else 0.5 * c)
                 direct[i, q + 1] += weight * dxi_dP[i - 1 + q]
                 dL_dH[i, q + 1] += weight * dxi_dH[i - 1 + q]
-            for k in range(2 if i == 1 else 3):
-                if i == 1:
-                    weight = 1.0 if k == 0 else -1.0
-                else:
-                    weight = 1.5 if k == 0 else (-2.0 if k == 1 else 0.5)
-                direct[i, 2 - k] -= weight * drho[i - k] * H[i - k] / h
-                dL_dH[i, 2 - k] -= weight * rho[i - k] / h
+            for k in range(3):
+                weight, mm = wedge_weight(i, k, n, s)
+                coefficient = abs(s) * weight / h
+                if k == 0:
+                    coefficient += c_t
+                if coefficient == 0.0:
+                    continue
+                c_index = mm - i + 2
+                direct[i, c_index] -= coefficient * drho[mm] * H[mm]
+                dL_dH[i, c_index] -= coefficient * rho[mm]
         finite = True
         for i in range(n):
             total = 0.0
             for j in range(n):
                 J[i, j] = 0.0
-            for c in range(4):
+            for c in range(5):
                 mm = i - 2 + c
                 if mm < 0 or mm >= n:
                     continue
@@ -243,7 +250,7 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, h, lam, viscosity_code,
                 P_new[k + 1] = P[k + 1] + t * step[k]
             H0_new = H0 + t * step[m]
             dense_state(P_new, H0_new, f, parabola, K_over_pi, h, lam, viscosity_code, density_code, params,
-                        elastic, H_new, L_new)
+                        elastic, s, c_t, H_new, L_new)
             trial = 0.0
             for k in range(m):
                 value, _, _ = fischer_burmeister(P_new[k + 1], -scale[k + 1] * L_new[k + 1])
@@ -296,8 +303,9 @@ def level_load(P, h):
 
 def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, n_of, offsets, h_of, parabola, K_local,
               mlmi_on, m_of, c1s, c2s, weights, direct_below, K_dense, lam, viscosity_code, density_code, params,
-              elastic, real_settings, int_settings):
-    """Execute one cycle ``schedule`` (:func:`cycle_schedule`) in place on the level buffers.
+              elastic, real_settings, int_settings, s, c_t):
+    """Execute one cycle ``schedule`` (:func:`cycle_schedule`) in place on the level buffers, for the
+    operator of speed ratio s and squeeze coefficient c_t (steady: s = 1, c_t = 0).
 
     Level k's pressures, FAS right-hand sides and frozen-dry flags are the slices
     ``offsets[k]:offsets[k] + n_of[k]`` of ``P_all``, ``f_all`` and ``dry_all`` (``P_old``
@@ -350,12 +358,12 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, n_of, offsets,
             H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                            direct_below, elastic)
             relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
-                         window, 1, n - 2, dry)
+                         window, 1, n - 2, dry, s, c_t)
             work += (n - 2) / n_finest
         if op == SOLVE:
             P_new, H0_new, iterations, status = coarse_newton(
                 P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], h, lam, viscosity_code,
-                density_code, params, elastic, 1e-11, 60)
+                density_code, params, elastic, s, c_t, 1e-11, 60)
             work += iterations * n / n_finest
             if status == 0:
                 for i in range(n):
@@ -366,14 +374,14 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, n_of, offsets,
                     H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                                    direct_below, elastic)
                     relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi,
-                                 switch, window, 1, n - 2, dry)
+                                 switch, window, 1, n - 2, dry, s, c_t)
                     work += (n - 2) / n_finest
                     H0s[k] += h0_relaxation * (level_load(P, h) - loads[k])
         elif op == DOWN:  # the FAS problem of level k - 1
             H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                            direct_below, elastic)
             r = np.empty(n)
-            reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, r)
+            reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, s, c_t, r)
             for i in range(n):
                 r[i] = 0.0 if P[i] <= 0.0 else f[i] - r[i]
             if freeze_boundary:  # no residual transfer at nodes beside the cavitation boundary
@@ -390,7 +398,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, n_of, offsets,
             Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                             direct_below, elastic)
             fc = f_all[oc:oc + nc]
-            reynolds_residual(Pc, Hc, h_of[k - 1], lam, viscosity_code, density_code, params, fc)
+            reynolds_residual(Pc, Hc, h_of[k - 1], lam, viscosity_code, density_code, params, s, c_t, fc)
             for j in range(1, nc - 1):
                 fc[j] += 0.25 * r[2 * j - 1] + 0.5 * r[2 * j] + 0.25 * r[2 * j + 1]
             if dry_own:  # coarse nodes dry with both neighbours dry keep their own equation

@@ -5,6 +5,21 @@ tests on small grids and readable as the specification); :func:`compiled` return
 ``numba.njit(cache=True, nogil=True)`` version of the same function, compiled on first use.
 Helpers are ``register_jitable`` so that they run both inside compiled code and as Python.
 
+The discrete operator at interior node i (Tsuha 2015 Eqs. 5.38, 5.42 for the steady case; in the fixed
+reference scaling of :mod:`camcontact.ehl.line_transient` for the transient one) is
+
+.. math::
+    L_i = \\frac{\\xi_{i-1/2}(P_{i-1} - P_i) + \\xi_{i+1/2}(P_{i+1} - P_i)}{h^2}
+          - |s|\\,\\frac{1.5\\,q_i - 2\\,q_{i-\\sigma} + 0.5\\,q_{i-2\\sigma}}{h}
+          - c_t\\,q_i, \\qquad q = \\bar\\rho H,\\ \\sigma = \\operatorname{sign}(s)
+
+a central Poiseuille term, the wedge scaled by the signed
+entrainment speed ratio s = u_m/u_ref and upwinded in the direction of the flow (second order,
+first order at the first interior node on the inflow side: i = 1 for s > 0, i = n - 2 for
+s < 0; no wedge at s = 0), plus the implicit part c_t q_i of the time derivative
+(BDF1: c_t = 1/dT, BDF2: c_t = a_0/dT). The history part of the time derivative is known and
+sits in the right-hand side f. The steady operator is the case s = 1, c_t = 0.
+
 Importing this module imports numba but compiles nothing.
 """
 
@@ -217,13 +232,39 @@ def density_ratio(P, density_code, params):
 
 
 @register_jitable
-def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K):
+def wedge_weight(i, k, n, s):
+    """(weight, node) of term k = 0, 1, 2 of the upwind wedge stencil at node i for speed ratio s.
+
+    Weights 1.5, -2, 0.5 on nodes i, i - sigma, i - 2 sigma; first order (1, -1) when the second
+    upstream node is outside the grid; (0, i) for an unused term or s = 0.
+    """
+    if s == 0.0:
+        return 0.0, i
+    sigma = 1 if s > 0.0 else -1
+    first_order = (i - 2 * sigma < 0) or (i - 2 * sigma > n - 1)
+    if first_order:
+        if k == 0:
+            return 1.0, i
+        if k == 1:
+            return -1.0, i - sigma
+        return 0.0, i
+    if k == 0:
+        return 1.5, i
+    if k == 1:
+        return -2.0, i - sigma
+    return 0.5, i - 2 * sigma
+
+
+@register_jitable
+def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
     """(dL_i/dP_i, dL_i/dP_{i-1}) of the discrete operator, local terms only.
 
     Includes the Poiseuille coefficients, their dependence on P (through rho and eta) and on
-    the films H_{i-1..i+1} (through K), and the wedge's dependence on rho(P) and on the films.
-    ``dlx`` = d ln(xi)/dP at fixed H and ``drh`` = d rho/dP hold the nodal law derivatives.
+    the films H_{i-1..i+1} (through K), and the dependence of the wedge and squeeze terms on
+    rho(P) and on the films. ``dlx`` = d ln(xi)/dP at fixed H and ``drh`` = d rho/dP hold the
+    nodal law derivatives.
     """
+    n = P.shape[0]
     inv_pi = 1.0 / math.pi
     hh = h * h
     left = 0.5 * (xi[i - 1] + xi[i])
@@ -246,20 +287,20 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K):
             d_im1 += weight * dxi_dp
         d_i -= weight * dxi_dh * inv_pi * K[abs(m - i)]
         d_im1 -= weight * dxi_dh * inv_pi * K[abs(m - i + 1)]
-    # wedge: -(1/h) sum_k w_k d(rho_m H_m), m = i - k
-    nk = 2 if i == 1 else 3
-    for k in range(nk):
-        if i == 1:
-            weight = 1.0 if k == 0 else -1.0
-        else:
-            weight = 1.5 if k == 0 else (-2.0 if k == 1 else 0.5)
-        m = i - k
-        d_i += inv_pi * weight * rho[m] * K[abs(m - i)] / h
-        d_im1 += inv_pi * weight * rho[m] * K[abs(m - i + 1)] / h
+    # wedge and squeeze: -sum_k c_k d(rho_m H_m), c_k = |s| w_k / h (+ c_t at m = i)
+    for k in range(3):
+        weight, m = wedge_weight(i, k, n, s)
+        coefficient = abs(s) * weight / h
+        if k == 0:
+            coefficient += c_t
+        if coefficient == 0.0:
+            continue
+        d_i += inv_pi * coefficient * rho[m] * K[abs(m - i)]
+        d_im1 += inv_pi * coefficient * rho[m] * K[abs(m - i + 1)]
         if m == i:
-            d_i -= weight * drh[m] * H[m] / h
+            d_i -= coefficient * drh[m] * H[m]
         elif m == i - 1:
-            d_im1 -= weight * drh[m] * H[m] / h
+            d_im1 -= coefficient * drh[m] * H[m]
     return d_i, d_im1
 
 
@@ -317,21 +358,23 @@ def nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, dr
 
 
 @register_jitable
-def operator_at(i, P, H, rho, xi, h):
-    """L_i: central Poiseuille term minus the upwind wedge (first order at i = 1) (Eqs. 5.38, 5.42)."""
+def operator_at(i, P, H, rho, xi, h, s, c_t):
+    """L_i of the module docstring (central Poiseuille, signed upwind wedge, implicit squeeze)."""
+    n = P.shape[0]
     left = 0.5 * (xi[i - 1] + xi[i])
     right = 0.5 * (xi[i] + xi[i + 1])
     poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
-    if i == 1:
-        wedge = rho[1] * H[1] - rho[0] * H[0]
-    else:
-        wedge = 1.5 * rho[i] * H[i] - 2.0 * rho[i - 1] * H[i - 1] + 0.5 * rho[i - 2] * H[i - 2]
-    return poiseuille - wedge / h
+    wedge = 0.0
+    for k in range(3):
+        weight, m = wedge_weight(i, k, n, s)
+        if weight != 0.0:
+            wedge += weight * rho[m] * H[m]
+    return poiseuille - abs(s) * wedge / h - c_t * rho[i] * H[i]
 
 
 @register_jitable
-def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, out):
-    """out_i = L_i(P, H) at interior nodes (Tsuha 2015 Eqs. 5.38, 5.42); boundary entries 0."""
+def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, s, c_t, out):
+    """out_i = L_i(P, H) at interior nodes; boundary entries 0."""
     n = P.shape[0]
     rho = np.empty(n)
     xi = np.empty(n)
@@ -339,16 +382,17 @@ def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, out):
     out[0] = 0.0
     out[n - 1] = 0.0
     for i in range(1, n - 1):
-        out[i] = operator_at(i, P, H, rho, xi, h)
+        out[i] = operator_at(i, P, H, rho, xi, h, s, c_t)
 
 
 @register_jitable
 def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
-                 window, first, last, dry):
+                 window, first, last, dry, s, c_t):
     """One hybrid Gauss–Seidel / Jacobi-distributive sweep for L(P) = f, in place on P and H.
 
     The regime of each node is fixed from the state at the start of the sweep: Gauss–Seidel
-    where (xi_{i-1/2} + xi_{i+1/2})/h^2 >= switch * |d wedge_i / d P_i| (the equation is
+    where (xi_{i-1/2} + xi_{i+1/2})/h^2 >= switch * |d (wedge_i + squeeze_i) / d P_i| through the
+    films, i.e. |(|s| sum_k w_k rho_m K(|m - i|)/h + c_t rho_i K(0)) / pi| (the equation is
     differential there), Jacobi-distributive elsewhere (integral character; Venner 1991,
     Tsuha 2015 Eqs. 5.54–5.59). With r_i = f_i - L_i and the exact local derivatives
     d_i = dL_i/dP_i, o_i = dL_i/dP_{i-1} (:func:`local_derivatives`):
@@ -378,16 +422,17 @@ def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega
     # the regime of every node is decided from the state at the start of the sweep
     for i in range(1, n - 1):
         coefficient = 0.5 * (xi[i - 1] + 2.0 * xi[i] + xi[i + 1]) / (h * h)
-        if i == 1:
-            d_wedge = rho[1] * K[0] - rho[0] * K[1]
-        else:
-            d_wedge = 1.5 * rho[i] * K[0] - 2.0 * rho[i - 1] * K[1] + 0.5 * rho[i - 2] * K[2]
-        jacobi[i] = coefficient < switch * abs(inv_pi * d_wedge / h)
+        d_integral = c_t * rho[i] * K[0]
+        for k in range(3):
+            weight, m = wedge_weight(i, k, n, s)
+            if weight != 0.0:
+                d_integral += abs(s) * weight * rho[m] * K[abs(m - i)] / h
+        jacobi[i] = coefficient < switch * abs(inv_pi * d_integral)
     for i in range(first, last + 1):
         if dry[i]:
             continue
-        r = f[i] - operator_at(i, P, H, rho, xi, h)
-        diagonal, off_diagonal = local_derivatives(i, P, H, rho, xi, dlx, drh, h, K)
+        r = f[i] - operator_at(i, P, H, rho, xi, h, s, c_t)
+        diagonal, off_diagonal = local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t)
         if not jacobi[i]:
             if diagonal == 0.0:
                 continue

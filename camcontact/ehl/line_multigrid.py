@@ -118,6 +118,9 @@ class _Solver:
         self.viscosity_code, self.density_code = problem.law_codes
         self.params = problem.law_parameters
         self.lam = problem.lam
+        #: signed entrainment speed ratio and implicit squeeze coefficient of the operator (steady: 1, 0;
+        #: see :mod:`camcontact.ehl._kernels`)
+        self.s, self.c_t = 1.0, 0.0
         self.work = 0.0
         #: frozen cavitation sets per level number (set when the cycles start to alternate)
         self.dry: dict[int, np.ndarray] = {}
@@ -168,7 +171,7 @@ class _Solver:
     def residual(self, level: _Level, P: np.ndarray, H: np.ndarray) -> np.ndarray:
         out = np.empty(level.n)
         self.kernel("reynolds_residual")(P, H, level.h, self.lam, self.viscosity_code, self.density_code,
-                                         self.params, out)
+                                         self.params, self.s, self.c_t, out)
         return out
 
     def load(self, level: _Level, P: np.ndarray) -> float:
@@ -215,7 +218,7 @@ class _Solver:
             schedule, self.P_all, self.P_old, self.f_all, self.H0s, self.loads, self.dry_all, self.n_of,
             self.offsets, self.h_of, self.parabola, self.K_local, self.mlmi_on, self.m_of, self.c1s, self.c2s,
             _kernels.INTERP6, DIRECT_BELOW, self.K_dense, self.lam, self.viscosity_code, self.density_code,
-            self.params, self.problem.elastic, self.real_settings, self.int_settings,
+            self.params, self.problem.elastic, self.real_settings, self.int_settings, self.s, self.c_t,
         )
         return self.P_all[o:o + n].copy(), float(self.H0s[k])
 

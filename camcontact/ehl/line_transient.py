@@ -38,7 +38,7 @@ sweeps and distributive dipoles follow the flow (sweeping against it diverged). 
 implicit BDF2 with variable steps (BDF1 on the first step, or throughout with
 ``scheme="bdf1"``); the history part of d(rho H)/dT goes into the right-hand side of the FAS
 problem, the implicit part c_t rho H into the operator
-(:mod:`camcontact.ehl._transient_kernels`). Each step is solved by the compiled FAS cycles of
+(:mod:`camcontact.ehl._kernels`). Each step is solved by the compiled FAS cycles of
 the steady solver (same hierarchy, MLMI, coarsest-grid Newton, free-boundary rules),
 warm-started from the previous step; if a step diverges or stalls it is retried with the
 conservative settings of :data:`camcontact.ehl.line_multigrid.ROBUST`. Cavitation: P >= 0
@@ -68,8 +68,6 @@ import attrs
 import numpy as np
 
 from ..errors import ConvergenceError, ConvergenceWarning, InputError
-from . import _fas_kernels, _kernels, _transient_kernels
-from .deformation import DIRECT_BELOW
 from .attempts import describe_settings
 from .line_multigrid import ROBUST, MultigridSettings, _alternating, _Solver, _stagnated, solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
@@ -180,18 +178,13 @@ class TransientLineResult:
 
 # ----------------------------------------------------------------------------- the hierarchy
 class _TransientHierarchy(_Solver):
-    """The steady solver's level hierarchy and buffers, cycling the transient operator."""
+    """The steady solver's level hierarchy, buffers and compiled cycles, with the operator's speed
+    ratio s and squeeze coefficient c_t and the film's curvature set per step."""
 
     def __init__(self, problem, levels, settings, compiled):
         super().__init__(problem, levels, settings, compiled)
         self.base_parabola = self.parabola.copy()
         self.curvature = 1.0
-        self.s = 1.0
-        self.c_t = 0.0
-        self.transient_cycle = (_transient_kernels.compiled("transient_fas_cycle") if compiled
-                                else _transient_kernels.transient_fas_cycle)
-        self.transient_residual = (_transient_kernels.compiled("transient_residual") if compiled
-                                   else _transient_kernels.transient_residual)
 
     def set_conditions(self, curvature: float, s: float, c_t: float) -> None:
         self.curvature, self.s, self.c_t = float(curvature), float(s), float(c_t)
@@ -204,30 +197,6 @@ class _TransientHierarchy(_Solver):
         if not self.problem.elastic:
             return H0 + parabola
         return H0 + parabola - level.deform(P) / math.pi
-
-    def residual(self, level, P, H):
-        out = np.empty(level.n)
-        self.transient_residual(P, H, level.h, self.lam, self.viscosity_code, self.density_code, self.params,
-                                self.s, self.c_t, out)
-        return out
-
-    def cycle(self, k, P, H0, f, f_load, kind=None):
-        kind = kind or self.settings.cycle
-        key = (k, kind)
-        schedule = self._schedules.get(key)
-        if schedule is None:
-            schedule = self._schedules[key] = _fas_kernels.cycle_schedule(k, kind, self.settings.cycle_coarsest - 1)
-        o, n = int(self.offsets[k]), int(self.n_of[k])
-        self.P_all[o:o + n] = P
-        self.f_all[o:o + n] = f
-        self.H0s[k], self.loads[k] = H0, f_load
-        self.work += self.transient_cycle(
-            schedule, self.P_all, self.P_old, self.f_all, self.H0s, self.loads, self.dry_all, self.n_of,
-            self.offsets, self.h_of, self.parabola, self.K_local, self.mlmi_on, self.m_of, self.c1s, self.c2s,
-            _kernels.INTERP6, DIRECT_BELOW, self.K_dense, self.lam, self.viscosity_code, self.density_code,
-            self.params, self.problem.elastic, self.real_settings, self.int_settings, self.s, self.c_t,
-        )
-        return self.P_all[o:o + n].copy(), float(self.H0s[k])
 
 
 # ----------------------------------------------------------------------------- the marcher

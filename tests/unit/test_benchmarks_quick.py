@@ -64,3 +64,13 @@ def test_accuracy_vs_time_cam_quick(tmp_path):
     # the squeeze term keeps the film at the reversals above the quasi-steady collapse
     assert transient["h_min near reversal [nm]"] > steady["h_min near reversal [nm]"] > 0
     assert (frame["median time [s]"] > 0).all()
+
+
+def test_accuracy_vs_time_point_quick(tmp_path):
+    frame = _load("accuracy_vs_time").main(["--point", "--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "accuracy_vs_time_point.csv").exists()
+    by = frame.set_index("method")
+    assert set(by.index) == {"multigrid 65x65", "multigrid 129x129", "nijenbanning", "hamrock_dowson"}
+    assert by.loc["multigrid 129x129", "error H_c [%]"] == 0.0  # the finest level is the reference here
+    # NVM fits numerical solutions: within 5 % of the 129^2 central film (test_point_ehl_literature: 257^2)
+    assert abs(by.loc["nijenbanning", "error H_c [%]"]) < 5.0

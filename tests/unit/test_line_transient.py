@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from camcontact.errors import ConvergenceError, ConvergenceWarning, InputError
-from camcontact.ehl import _kernels, _transient_kernels
+from camcontact.ehl import _fas_kernels, _kernels
 from camcontact.ehl.deformation import Deformation
 from camcontact.ehl.line_multigrid import MultigridSettings, solve_multigrid
 from camcontact.ehl.line_problem import LineEHLProblem, kernel_coefficients
@@ -32,13 +32,16 @@ def _state(n=57, seed=0):
 
 # ----------------------------------------------------------------------------- kernels
 def test_transient_operator_reduces_to_the_steady_one():
-    """s = 1, c_t = 0: the transient residual equals the steady kernel's (same discretisation)."""
+    """s = 1, c_t = 0: the kernel residual equals the steady vectorised operator (same discretisation)."""
+    from camcontact.ehl.line_operator import LineGrid
+
     problem, X, h, P, H, _ = _state()
     codes, params = problem.law_codes, problem.law_parameters
-    steady, transient = np.empty(X.size), np.empty(X.size)
-    _kernels.reynolds_residual(P, H, h, problem.lam, *codes, params, steady)
-    _transient_kernels.transient_residual(P, H, h, problem.lam, *codes, params, 1.0, 0.0, transient)
-    np.testing.assert_allclose(transient, steady, rtol=1e-13, atol=1e-13)
+    grid = LineGrid(problem, X.size, "direct")
+    np.testing.assert_allclose(grid.X, X, rtol=0, atol=1e-14)
+    out = np.empty(X.size)
+    _kernels.reynolds_residual(P, H, h, problem.lam, *codes, params, 1.0, 0.0, out)
+    np.testing.assert_allclose(out, grid.residual(P, H), rtol=1e-12, atol=1e-12)
 
 
 def test_reversed_flow_operator_is_the_mirror_image():
@@ -46,9 +49,8 @@ def test_reversed_flow_operator_is_the_mirror_image():
     problem, X, h, P, H, _ = _state()
     codes, params = problem.law_codes, problem.law_parameters
     forward, backward = np.empty(X.size), np.empty(X.size)
-    _transient_kernels.transient_residual(P, H, h, problem.lam, *codes, params, 0.6, 3.0, forward)
-    _transient_kernels.transient_residual(P[::-1].copy(), H[::-1].copy(), h, problem.lam, *codes, params, -0.6, 3.0,
-                                          backward)
+    _kernels.reynolds_residual(P, H, h, problem.lam, *codes, params, 0.6, 3.0, forward)
+    _kernels.reynolds_residual(P[::-1].copy(), H[::-1].copy(), h, problem.lam, *codes, params, -0.6, 3.0, backward)
     np.testing.assert_allclose(backward[::-1], forward, rtol=1e-13, atol=1e-13)
 
 
@@ -56,7 +58,7 @@ def test_zero_speed_operator_has_only_poiseuille_and_squeeze():
     problem, X, h, P, H, _ = _state()
     codes, params = problem.law_codes, problem.law_parameters
     out = np.empty(X.size)
-    _transient_kernels.transient_residual(P, H, h, problem.lam, *codes, params, 0.0, 2.5, out)
+    _kernels.reynolds_residual(P, H, h, problem.lam, *codes, params, 0.0, 2.5, out)
     rho = problem.density_ratio(P)
     xi = rho * H**3 * np.exp(-problem.log_viscosity(P)) / problem.lam
     half = 0.5 * (xi[1:] + xi[:-1])
@@ -72,13 +74,13 @@ def test_kernel_twins_equal_compiled(s, c_t):
     codes, params = problem.law_codes, problem.law_parameters
     K = np.array([_kernels.kernel_value(float(d), h) for d in range(16)])
     python, compiled = np.empty(X.size), np.empty(X.size)
-    _transient_kernels.PY["transient_residual"](P, H, h, problem.lam, *codes, params, s, c_t, python)
-    _transient_kernels.compiled("transient_residual")(P, H, h, problem.lam, *codes, params, s, c_t, compiled)
+    _kernels.PY["reynolds_residual"](P, H, h, problem.lam, *codes, params, s, c_t, python)
+    _kernels.compiled("reynolds_residual")(P, H, h, problem.lam, *codes, params, s, c_t, compiled)
     np.testing.assert_allclose(compiled, python, rtol=1e-12, atol=1e-12)
 
     dry = np.zeros(X.size, dtype=np.bool_)
     results = []
-    for kernel in (_transient_kernels.PY["transient_relax"], _transient_kernels.compiled("transient_relax")):
+    for kernel in (_kernels.PY["relax_hybrid"], _kernels.compiled("relax_hybrid")):
         P1, H1 = P.copy(), H.copy()
         count = kernel(P1, H1, f, h, problem.lam, *codes, params, K, 0.7, 0.3, 4.0, 0, 1, X.size - 2, dry, s, c_t)
         results.append((P1, H1, count))
@@ -94,8 +96,8 @@ def test_kernel_twins_equal_compiled(s, c_t):
     K_over_pi = table[np.abs(np.arange(n)[:, None] - np.arange(n)[None, :])] / math.pi
     args = (Pc, 0.3, np.zeros(n), 0.0, 0.5 * Xc**2, K_over_pi, hc, problem.lam, *codes, params, True, s, c_t,
             1e-11, 60)
-    py = _transient_kernels.PY["transient_coarse_newton"](*args)
-    nb = _transient_kernels.compiled("transient_coarse_newton")(*args)
+    py = _fas_kernels.PY["coarse_newton"](*args)
+    nb = _fas_kernels.compiled("coarse_newton")(*args)
     np.testing.assert_allclose(nb[0], py[0], rtol=1e-9, atol=1e-10)
     assert nb[1] == pytest.approx(py[1], rel=1e-9, abs=1e-10)
     assert (nb[2], nb[3]) == (py[2], py[3])
