@@ -10,9 +10,11 @@ Full Approximation Scheme on the grids n_k = 16 2^(k-1) + 1 nodes per direction
   linearisation, cavitation by projection (P <- max(P, 0)); the films are recomputed by FFT
   convolution (DC-FFT) before every sweep. This is the point-wise version of the line
   relaxation Venner & Lubrecht use for point contacts — simpler; measured to converge for
-  M = 10..100, L = 5..25, D = 0.25..4 (4-17 W-cycles on 257^2), but NOT at heavy load
-  (M = 1000: the first attempts diverge and the conservative one stalls; the solver then warns
-  or raises). Line relaxation (Gauss–Seidel / distributive lines along X) is the known remedy;
+  M = 10..100, L = 5..25, D = 0.25..4 (4-17 W-cycles on 257^2) and, slowly, at heavy load
+  (M = 1000, L = 10: 45-70 W-cycles on 129^2 and 257^2, residual factor about 0.9 per cycle,
+  hence ``max_cycles`` = 80; with Dowson–Higginson on 257^2 only the most conservative attempt
+  of :data:`ROBUST` converges). Line relaxation (Gauss–Seidel / distributive lines along X) is
+  the known remedy for the slow rate;
 * **coarse-grid correction** — residuals restricted by 9-point full weighting, the solution by
   injection, the coarse problem carrying the FAS right-hand sides of the Reynolds equation and
   of the load balance; bilinear interpolation of the corrections. At the cavitation boundary
@@ -67,7 +69,7 @@ class PointMultigridSettings:
     #: Gauss–Seidel where sum(eps faces)/h^2 >= switch x the wedge's own response
     switch: float = 1.0
     h0_relaxation: float = 0.05
-    max_cycles: int = 40
+    max_cycles: int = 80
     #: FMG starts here (level 2: 33 x 33) from the dry Hertz pressure
     start_level: int = 2
     start_cycles: int = 30

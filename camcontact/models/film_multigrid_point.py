@@ -38,8 +38,9 @@ class MultigridPoint(FilmModel):
     strict : bool
         Raise ConvergenceError when the solver does not converge (default: warn).
 
-    Validity: measured to converge for Moes M = 10..100, L = 5..25, D = Rx/Ry = 0.25..4; heavy
-    loads (M of about 1000 and above) do not converge and say so.
+    Validity: measured to converge for Moes M = 10..100, L = 5..25, D = Rx/Ry = 0.25..4, and
+    slowly for M = 1000, L = 10 (45-70 cycles; the film there needs 257^2 or finer: H_c is 38 %
+    below Nijenbanning on 129^2, 12 % below on 257^2); heavier loads do not converge and say so.
 
     References
     ----------
