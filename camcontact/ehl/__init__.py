@@ -1,5 +1,13 @@
-"""Elastohydrodynamic lubrication: dimensionless groups and (from issue 3 on) numerical solvers.
+"""Elastohydrodynamic lubrication: dimensionless groups and the numerical solvers.
 
-Importing this package compiles nothing; numba kernels live in ``_kernels.py`` and are
-compiled on first use only.
+* line contacts, steady: :mod:`.line_problem`, :mod:`.line_multigrid` (FAS multigrid),
+  :mod:`.line_reference` (dense Newton reference), :mod:`.line_solution`;
+* line contacts, transient with the squeeze term: :mod:`.line_transient`;
+* point and elliptical contacts, steady: :mod:`.point_problem`, :mod:`.point_multigrid`,
+  :mod:`.point_solution`;
+* shared: :mod:`.groups` (Hamrock and Moes groups), :mod:`.deformation` (MLMI), :mod:`.attempts`
+  (the ladder of solver attempts).
+
+Importing this package compiles nothing; the numba kernels (``_kernels.py``, ``_fas_kernels.py``,
+``_point_kernels.py``) are compiled on first use only.
 """
