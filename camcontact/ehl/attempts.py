@@ -65,7 +65,7 @@ def run_ladder(settings: Any, robust: Iterable[Mapping[str, Any]], solve: Callab
         kept = attrs.evolve(kept, record=attrs.evolve(kept.record, message=note,
                                                       wall_time=time.perf_counter() - start))
     if not kept.record.converged:
-        text = f"{label.rstrip(')')}, {size}): {kept.record.message}"
+        text = f"{label.rstrip(')')}, {size}): not converged: {kept.record.message}"
         if strict:
             raise ConvergenceError(text, kept.record)
         warnings.warn(text, ConvergenceWarning, stacklevel=3)

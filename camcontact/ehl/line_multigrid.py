@@ -296,52 +296,29 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
             for _ in range(settings.fmg_cycles):
                 P, H0 = solver.cycle(k, P, H0, zero, 0.0)
     zero = np.zeros(finest.n)
-    residuals, loads, works = [], [], []
-    changes: list[float] = []
-    boundaries: list[int] = []  # last pressurised node after each cycle
-    frozen_at = 0  # the residual measure changes when the dry set is frozen
-    converged = False
-    message = ""
-    previous = None
+    watch = CycleMonitor(solver, tolerance, load_floor=1e-9)
     for _ in range(settings.max_cycles):
         P, H0 = solver.cycle(len(solver.levels) - 1, P, H0, zero, 0.0)
         H = solver.film(finest, P, H0)
         if not (np.all(np.isfinite(P)) and np.all(np.isfinite(H)) and math.isfinite(H0)):
             raise ConvergenceError(
                 f"line EHL multigrid diverged (M = {problem.M:.4g}, L = {problem.L:.4g}): non-finite state",
-                _record(solver, residuals, loads, works, start, False, "non-finite state", tolerance),
+                _record(solver, watch.residuals, watch.loads, watch.works, start, False, "non-finite state",
+                        tolerance),
             )
         r = solver.residual(finest, P, H)
         r = np.where(P > 0.0, r, np.maximum(r, 0.0))
-        residuals.append(float(np.mean(np.abs(r[1:-1])) * finest.h))
-        loads.append(solver.load(finest, P))
-        works.append(solver.work)
-        current = (float(H.min()), H0)
-        wet = np.flatnonzero(P > 0.0)
-        boundaries.append(int(wet[-1]) if wet.size else -1)
-        if tolerance is not None and previous is not None:
-            change = max(abs(current[0] - previous[0]), abs(current[1] - previous[1]))
-            changes.append(current[0] - previous[0])
-            if change < tolerance and abs(loads[-1]) < max(tolerance, 1e-9) * 10:
-                converged = True
-                break
-            if _stagnated(residuals[frozen_at:]):
-                message = (message + "; " if message else "") + (
-                    f"stagnated: residual not halved in the last {STAGNATION[1]} cycles")
-                break
-            if not solver.dry and _alternating(changes) and len(set(boundaries[-3:])) > 1:
-                # the cavitation boundary hops between two nodes from cycle to cycle: freeze the
-                # dry set of the finest grid (and its restrictions) and let the cycles converge
-                solver.freeze_dry(P)
-                frozen_at = len(residuals)
-                message = f"cavitation set frozen after cycle {len(residuals)} (boundary oscillation)"
-        previous = current
+        if watch.after_cycle(P, H, H0, float(np.mean(np.abs(r[1:-1])) * finest.h), solver.load(finest, P),
+                             solver.work):
+            break
     else:
         if tolerance is None:
-            converged = True
-            message = f"fixed number of cycles ({settings.max_cycles})"
+            watch.converged = True
+            watch.message = f"fixed number of cycles ({settings.max_cycles})"
         else:
-            message = (message + "; " if message else "") + f"no convergence to {tolerance:g} in {settings.max_cycles} cycles"
+            watch.note(f"no convergence to {tolerance:g} in {settings.max_cycles} cycles")
+    converged, message = watch.converged, watch.message
+    residuals, loads, works = watch.residuals, watch.loads, watch.works
     if solver.dry and converged:
         H_check = solver.film(finest, P, H0)
         wants = (solver.residual(finest, P, H_check) > 0.0) & solver.dry[finest.k]
@@ -374,6 +351,61 @@ def _alternating(changes: list[float]) -> bool:
     a, b, c = changes[-3:]
     same_size = max(abs(a), abs(b), abs(c)) <= 2.0 * min(abs(a), abs(b), abs(c)) + 1e-15
     return a * b < 0 and b * c < 0 and same_size
+
+
+class CycleMonitor:
+    """The per-cycle bookkeeping and stop rules of a line FAS solve (steady and transient).
+
+    :meth:`after_cycle` records the residual, the load error and the work of a cycle and decides:
+    converged (the changes of H_min and H0 below ``tolerance`` and the load error below
+    10 max(``tolerance``, ``load_floor``)), stagnated (:func:`_stagnated`, after the last freeze),
+    or — when the cavitation boundary hops between nodes while H_min alternates — freeze the dry
+    set of the solver and go on. ``tolerance`` None: no test (a fixed number of cycles).
+    """
+
+    def __init__(self, solver, tolerance: float | None, load_floor: float = 0.0):
+        self.solver, self.tolerance, self.load_floor = solver, tolerance, load_floor
+        self.residuals: list[float] = []
+        self.loads: list[float] = []
+        self.works: list[float] = []
+        self.changes: list[float] = []
+        self.boundaries: list[int] = []  # last pressurised node after each cycle
+        self.frozen_at = 0  # the residual measure changes when the dry set is frozen
+        self.previous = None
+        self.converged = False
+        self.message = ""
+
+    def after_cycle(self, P: np.ndarray, H: np.ndarray, H0: float, residual: float, load: float, work: float) -> bool:
+        """Record one cycle; True when the solve stops here (see :attr:`converged` and :attr:`message`)."""
+        self.residuals.append(residual)
+        self.loads.append(load)
+        self.works.append(work)
+        current = (float(H.min()), H0)
+        wet = np.flatnonzero(P > 0.0)
+        self.boundaries.append(int(wet[-1]) if wet.size else -1)
+        previous, self.previous = self.previous, current
+        tolerance = self.tolerance
+        if tolerance is None or previous is None:
+            return False
+        change = max(abs(current[0] - previous[0]), abs(current[1] - previous[1]))
+        self.changes.append(current[0] - previous[0])
+        if change < tolerance and abs(load) < max(tolerance, self.load_floor) * 10:
+            self.converged = True
+            return True
+        if _stagnated(self.residuals[self.frozen_at:]):
+            self.note(f"stagnated: residual not halved in the last {STAGNATION[1]} cycles")
+            return True
+        if not self.solver.dry and _alternating(self.changes) and len(set(self.boundaries[-3:])) > 1:
+            # the cavitation boundary hops between two nodes from cycle to cycle: freeze the dry
+            # set of the finest grid (and its restrictions) and let the cycles converge
+            self.solver.freeze_dry(P)
+            self.frozen_at = len(self.residuals)
+            self.message = f"cavitation set frozen after cycle {len(self.residuals)} (boundary oscillation)"
+        return False
+
+    def note(self, text: str) -> None:
+        """Append ``text`` to the message."""
+        self.message = (self.message + "; " if self.message else "") + text
 
 
 def _start(problem: LineEHLProblem, level: int, finest: int) -> tuple[int, LineEHLSolution]:

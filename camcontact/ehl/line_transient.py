@@ -68,8 +68,8 @@ import attrs
 import numpy as np
 
 from ..errors import ConvergenceError, ConvergenceWarning, InputError
-from .attempts import describe_settings
-from .line_multigrid import ROBUST, MultigridSettings, _alternating, _Solver, _stagnated, solve_multigrid
+from .attempts import run_ladder
+from .line_multigrid import ROBUST, CycleMonitor, MultigridSettings, _Solver, solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
 
@@ -216,6 +216,17 @@ def coarsest_level(domain) -> int:
     return level
 
 
+@attrs.frozen
+class _Attempt:
+    """One attempt of :meth:`TransientLineSolver._solve`, as :func:`camcontact.ehl.attempts.run_ladder` wants it."""
+
+    P: np.ndarray = attrs.field(eq=False)
+    H0: float
+    H: np.ndarray = attrs.field(eq=False)
+    record: ConvergenceRecord
+    settings: MultigridSettings
+
+
 class TransientLineSolver:
     """Implicit time march of the transient line contact in a fixed reference scaling.
 
@@ -258,8 +269,6 @@ class TransientLineSolver:
         if settings is None:
             settings = MultigridSettings(cycle_coarsest=min(coarsest_level(scaling.problem.domain), int(levels) - 1))
         self.settings = settings
-        self.ladder = [self.settings] + [c for c in (attrs.evolve(self.settings, **r) for r in ROBUST)
-                                         if c != self.settings]
         self.strict = strict
         self.compiled = compiled
         self.keep_fields = keep_fields
@@ -395,51 +404,29 @@ class TransientLineSolver:
         """Converge one instant; the robustness ladder on failure; warn/raise when not converged."""
         if c_t == 0.0 and s == 0.0:
             raise InputError("transient EHL: u_m = 0 without a time step has no solution")
-        tried = []
-        kept = None
         # reversed flow (s < 0) is solved on the mirrored grid with s > 0: the Gauss-Seidel sweeps
         # and the distributive dipoles of the relaxation then run in the direction of the flow
         # (measured: sweeping against the flow diverges a few steps after a reversal)
         mirrored = s < 0.0
         flip = (lambda a: a[::-1].copy()) if mirrored else (lambda a: a.copy())
-        for settings in self.ladder:
+
+        def attempt(settings):
             hierarchy = self._hierarchy(settings, mirrored)
             hierarchy.set_conditions(curvature, abs(s), c_t)
-            try:
-                result = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
-                result = (flip(result[0]), result[1], flip(result[2]), result[3])
-            except ConvergenceError as exc:
-                tried.append(f"{describe_settings(settings, self.settings)} failed ({exc})")
-                continue
-            if result[3].converged:
-                kept = result
-                break
-            tried.append(f"{describe_settings(settings, self.settings)} did not converge ({result[3].message})")
-            if kept is None or result[3].residuals[-1] < kept[3].residuals[-1]:
-                kept = result
-        if kept is None:
-            raise ConvergenceError(f"transient line EHL ({label}): every attempt diverged: " + "; ".join(tried))
-        P_new, H0_new, H, record = kept
-        message = "; ".join(tried + ([record.message] if record.message else []))
-        record = attrs.evolve(record, message=message, wall_time=time.perf_counter() - start)
-        if not record.converged:
-            text = f"transient line EHL ({label}, {self.n} nodes): not converged: {message}"
-            if self.strict:
-                raise ConvergenceError(text, record)
-            warnings.warn(text, ConvergenceWarning, stacklevel=3)
-        return P_new, H0_new, H, record
+            P_new, H0_new, H, record = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
+            return _Attempt(P=flip(P_new), H0=H0_new, H=flip(H), record=record, settings=settings)
+
+        kept = run_ladder(self.settings, ROBUST, attempt, f"transient line EHL ({label})", strict=self.strict,
+                          size=f"{self.n} nodes")
+        record = attrs.evolve(kept.record, wall_time=time.perf_counter() - start)
+        return kept.P, kept.H0, kept.H, record
 
     def _cycles(self, hierarchy, P, H0, f, f_load):
         settings = hierarchy.settings
         finest = hierarchy.levels[-1]
         k = len(hierarchy.levels) - 1
         tol = self.tolerance
-        residuals, loads, works = [], [], []
-        changes, boundaries = [], []
-        frozen_at = 0
-        message = ""
-        converged = False
-        previous = None
+        watch = CycleMonitor(hierarchy, tol)
         work0 = hierarchy.work
         for _ in range(settings.max_cycles):
             P, H0 = hierarchy.cycle(k, P, H0, f, f_load)
@@ -449,32 +436,16 @@ class TransientLineSolver:
             r = hierarchy.residual(finest, P, H) - f
             r[0] = r[-1] = 0.0
             r = np.where(P > 0.0, r, np.maximum(r, 0.0))
-            residuals.append(float(np.mean(np.abs(r[1:-1])) * finest.h))
-            loads.append(hierarchy.load(finest, P) - f_load)
-            works.append(hierarchy.work - work0)
-            current = (float(H.min()), H0)
-            wet = np.flatnonzero(P > 0.0)
-            boundaries.append(int(wet[-1]) if wet.size else -1)
-            if previous is not None:
-                change = max(abs(current[0] - previous[0]), abs(current[1] - previous[1]))
-                changes.append(current[0] - previous[0])
-                if change < tol and abs(loads[-1]) < 10.0 * tol:
-                    converged = True
-                    break
-                if _stagnated(residuals[frozen_at:]):
-                    message = (message + "; " if message else "") + "stagnated"
-                    break
-                if not hierarchy.dry and _alternating(changes) and len(set(boundaries[-3:])) > 1:
-                    hierarchy.freeze_dry(P)
-                    frozen_at = len(residuals)
-                    message = f"cavitation set frozen after cycle {len(residuals)}"
-            previous = current
+            if watch.after_cycle(P, H, H0, float(np.mean(np.abs(r[1:-1])) * finest.h),
+                                 hierarchy.load(finest, P) - f_load, hierarchy.work - work0):
+                break
         else:
-            message = (message + "; " if message else "") + f"no convergence to {tol:g} in {settings.max_cycles} cycles"
+            watch.note(f"no convergence to {tol:g} in {settings.max_cycles} cycles")
         record = ConvergenceRecord(
             method=f"transient FAS multigrid ({self.scheme}), {settings.cycle}-cycles",
-            levels=len(hierarchy.levels), nodes=finest.n, residuals=tuple(residuals), load_errors=tuple(loads),
-            work_units=tuple(works), wall_time=0.0, converged=converged, message=message, tolerance=tol,
+            levels=len(hierarchy.levels), nodes=finest.n, residuals=tuple(watch.residuals),
+            load_errors=tuple(watch.loads), work_units=tuple(watch.works), wall_time=0.0, converged=watch.converged,
+            message=watch.message, tolerance=tol,
         )
         return P, H0, H, record
 
