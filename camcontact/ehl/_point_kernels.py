@@ -27,7 +27,7 @@ from numba.extending import register_jitable
 from ._kernels import law_state
 from ..jit import compile_kernel
 
-__all__ = ["PY", "compiled", "deformation_direct_2d", "kernel_rectangle"]
+__all__ = ["PY", "band_solve", "compiled", "deformation_direct_2d", "kernel_rectangle"]
 
 #: stencil nodes (dj, di) of L_ij: the node, its four neighbours and the second upwind node
 STENCIL_DJ = (0, 0, 0, -1, 1, 0)
@@ -86,6 +86,26 @@ def point_nodal(P, H, lam, viscosity_code, density_code, params, rho, eps, dle, 
 
 
 @register_jitable
+def pattern_work():
+    """Work arrays of :func:`pattern_derivative`: pattern offsets (dj, di), weights (5 entries) and
+    the changes of P, epsilon and rho H at the six stencil nodes."""
+    return (np.zeros(5, dtype=np.int64), np.zeros(5, dtype=np.int64), np.zeros(5), np.zeros(6), np.zeros(6),
+            np.zeros(6))
+
+
+@register_jitable
+def nodal_arrays(P, H, lam, viscosity_code, density_code, params):
+    """(rho, epsilon, d ln epsilon/dP, d rho/dP) as new arrays (:func:`point_nodal`)."""
+    ny, nx = P.shape
+    rho = np.empty((ny, nx))
+    eps = np.empty((ny, nx))
+    dle = np.empty((ny, nx))
+    drh = np.empty((ny, nx))
+    point_nodal(P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh)
+    return rho, eps, dle, drh
+
+
+@register_jitable
 def point_nodal_at(j, i, P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh):
     p = P[j, i]
     gap = max(H[j, i], 0.0)  # a closed gap passes no pressure flow
@@ -119,11 +139,7 @@ def point_operator_at(j, i, P, H, rho, eps, hx, hy):
 def point_residual(P, H, hx, hy, lam, viscosity_code, density_code, params, out):
     """out = L(P, H) at interior nodes, 0 on the boundary."""
     ny, nx = P.shape
-    rho = np.empty((ny, nx))
-    eps = np.empty((ny, nx))
-    dle = np.empty((ny, nx))
-    drh = np.empty((ny, nx))
-    point_nodal(P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh)
+    rho, eps, dle, drh = nodal_arrays(P, H, lam, viscosity_code, density_code, params)
     for j in range(ny):
         for i in range(nx):
             if j == 0 or i == 0 or j == ny - 1 or i == nx - 1:
@@ -184,6 +200,89 @@ def pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw,
     return result - wedge / hx
 
 
+@register_jitable
+def choose_regimes(rho, eps, hx, hy, Kd, switch, jacobi):
+    """jacobi[j, i] = True where the node relaxes distributively: the Poiseuille coefficient
+    sum(epsilon faces)/h^2 is below ``switch`` x the wedge's own response 1.5 rho K_00 / h_x
+    (integral character); Gauss–Seidel (False) elsewhere (Venner & Lubrecht 2000 §8.4)."""
+    ny, nx = eps.shape
+    for j in range(1, ny - 1):
+        for i in range(1, nx - 1):
+            coefficient = (0.5 * (eps[j, i - 1] + 2.0 * eps[j, i] + eps[j, i + 1]) / (hx * hx)
+                           + 0.5 * (eps[j - 1, i] + 2.0 * eps[j, i] + eps[j + 1, i]) / (hy * hy))
+            if i == 1:
+                d_wedge = rho[j, 1] * Kd[0, 0] - rho[j, 0] * Kd[0, 1]
+            else:
+                d_wedge = 1.5 * rho[j, i] * Kd[0, 0] - 2.0 * rho[j, i - 1] * Kd[0, 1] + 0.5 * rho[j, i - 2] * Kd[0, 2]
+            jacobi[j, i] = coefficient < switch * abs(d_wedge / hx)
+
+
+@register_jitable
+def distributive_pattern(j, k, offset, jacobi, pdj, pdi, pw, start):
+    """Write the change pattern of node (j, k) at entries start.. of (pdj, pdi, pw), offsets
+    relative to column k - ``offset``: +1 at the node and, if it relaxes distributively, -1/4 at
+    each of its four interior neighbours that do too. Returns the next free entry."""
+    ny, nx = jacobi.shape
+    pdj[start] = 0
+    pdi[start] = offset
+    pw[start] = 1.0
+    npat = start + 1
+    if jacobi[j, k]:
+        for q in range(4):
+            dj = STENCIL_DJ[q + 1]
+            di = STENCIL_DI[q + 1]
+            if 0 < j + dj < ny - 1 and 0 < k + di < nx - 1 and jacobi[j + dj, k + di]:
+                pdj[npat] = dj
+                pdi[npat] = offset + di
+                pw[npat] = -0.25
+                npat += 1
+    return npat
+
+
+@register_jitable
+def apply_distributive(P, delta, jacobi, omega_jacobi, dry):
+    """P += omega delta at each distributive node and -omega delta/4 at its distributive interior
+    neighbours; then P <- 0 where negative (cavitation), dry or on the boundary."""
+    ny, nx = P.shape
+    for j in range(1, ny - 1):
+        for i in range(1, nx - 1):
+            value = delta[j, i]
+            if value == 0.0:
+                continue
+            P[j, i] += omega_jacobi * value
+            for q in range(4):
+                dj = STENCIL_DJ[q + 1]
+                di = STENCIL_DI[q + 1]
+                if 0 < j + dj < ny - 1 and 0 < i + di < nx - 1 and jacobi[j + dj, i + di]:
+                    P[j + dj, i + di] -= 0.25 * omega_jacobi * value
+    for j in range(ny):
+        for i in range(nx):
+            if P[j, i] < 0.0 or dry[j, i] or j == 0 or i == 0 or j == ny - 1 or i == nx - 1:
+                P[j, i] = 0.0
+
+
+@register_jitable
+def gauss_seidel_at(j, i, r, P, H, rho, eps, dle, drh, hx, hy, lam, viscosity_code, density_code, params, Kd,
+                    omega_gs, pdj, pdi, pw, work_p, work_e, work_rh):
+    """Point Gauss–Seidel at (j, i) with residual r: P += omega_gs r / (dL/dP), clipped at 0; the
+    node's own film follows through K_00 and its epsilon and rho are recomputed. Skips a node whose
+    derivative is not negative. (pdj, pdi, pw: pattern work arrays, entry 0 is used.)"""
+    pdj[0] = 0
+    pdi[0] = 0
+    pw[0] = 1.0
+    d = pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, 1, work_p, work_e, work_rh)
+    if not d < 0.0:
+        return
+    new = P[j, i] + omega_gs * r / d
+    if new < 0.0:
+        new = 0.0
+    change = new - P[j, i]
+    if change != 0.0:
+        P[j, i] = new
+        H[j, i] += Kd[0, 0] * change
+        point_nodal_at(j, i, P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh)
+
+
 def point_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params, Kd, omega_gs, omega_jacobi, switch,
                 dry):
     """One hybrid Gauss–Seidel / Jacobi-distributive point sweep for L(P) = f, in place on P and H.
@@ -207,57 +306,22 @@ def point_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params, Kd, 
     Returns the number of distributive nodes.
     """
     ny, nx = P.shape
-    rho = np.empty((ny, nx))
-    eps = np.empty((ny, nx))
-    dle = np.empty((ny, nx))
-    drh = np.empty((ny, nx))
-    point_nodal(P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh)
+    rho, eps, dle, drh = nodal_arrays(P, H, lam, viscosity_code, density_code, params)
     jacobi = np.zeros((ny, nx), dtype=np.bool_)
     delta = np.zeros((ny, nx))
-    pdj = np.zeros(5, dtype=np.int64)
-    pdi = np.zeros(5, dtype=np.int64)
-    pw = np.zeros(5)
-    work_p = np.zeros(6)
-    work_e = np.zeros(6)
-    work_rh = np.zeros(6)
+    pdj, pdi, pw, work_p, work_e, work_rh = pattern_work()
     count = 0
-    for j in range(1, ny - 1):
-        for i in range(1, nx - 1):
-            coefficient = (0.5 * (eps[j, i - 1] + 2.0 * eps[j, i] + eps[j, i + 1]) / (hx * hx)
-                           + 0.5 * (eps[j - 1, i] + 2.0 * eps[j, i] + eps[j + 1, i]) / (hy * hy))
-            if i == 1:
-                d_wedge = rho[j, 1] * Kd[0, 0] - rho[j, 0] * Kd[0, 1]
-            else:
-                d_wedge = 1.5 * rho[j, i] * Kd[0, 0] - 2.0 * rho[j, i - 1] * Kd[0, 1] + 0.5 * rho[j, i - 2] * Kd[0, 2]
-            jacobi[j, i] = coefficient < switch * abs(d_wedge / hx)
+    choose_regimes(rho, eps, hx, hy, Kd, switch, jacobi)
     for j in range(1, ny - 1):
         for i in range(1, nx - 1):
             if dry[j, i]:
                 continue
             r = f[j, i] - point_operator_at(j, i, P, H, rho, eps, hx, hy)
-            pw[0] = 1.0
             if not jacobi[j, i]:
-                d = pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, 1, work_p, work_e, work_rh)
-                if not d < 0.0:
-                    continue
-                new = P[j, i] + omega_gs * r / d
-                if new < 0.0:
-                    new = 0.0
-                change = new - P[j, i]
-                if change != 0.0:
-                    P[j, i] = new
-                    H[j, i] += Kd[0, 0] * change
-                    point_nodal_at(j, i, P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh)
+                gauss_seidel_at(j, i, r, P, H, rho, eps, dle, drh, hx, hy, lam, viscosity_code, density_code, params,
+                                Kd, omega_gs, pdj, pdi, pw, work_p, work_e, work_rh)
             else:
-                npat = 1
-                for q in range(4):
-                    dj = STENCIL_DJ[q + 1]
-                    di = STENCIL_DI[q + 1]
-                    if 0 < j + dj < ny - 1 and 0 < i + di < nx - 1 and jacobi[j + dj, i + di]:
-                        pdj[npat] = dj
-                        pdi[npat] = di
-                        pw[npat] = -0.25
-                        npat += 1
+                npat = distributive_pattern(j, i, 0, jacobi, pdj, pdi, pw, 0)
                 d = pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, npat, work_p, work_e, work_rh)
                 for q in range(5):
                     pdj[q] = 0
@@ -266,21 +330,152 @@ def point_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params, Kd, 
                 if d < 0.0:
                     delta[j, i] = r / d
                 count += 1
-    for j in range(1, ny - 1):
-        for i in range(1, nx - 1):
-            value = delta[j, i]
-            if value == 0.0:
+    apply_distributive(P, delta, jacobi, omega_jacobi, dry)
+    return count
+
+
+@register_jitable
+def band_solve(A, rhs, m, bw, x):
+    """Solve the banded system sum_c A[q, bw + c - q] x_c = rhs_q, q < m, half-bandwidth ``bw``, by
+    Gaussian elimination without pivoting (A and rhs are overwritten). The line matrices of the
+    relaxation have negative dominant diagonals; returns False (x untouched) at the first pivot
+    that is not negative, so the caller can fall back."""
+    for q in range(m):
+        pivot = A[q, bw]
+        if not pivot < 0.0:
+            return False
+        for r in range(q + 1, min(q + bw + 1, m)):
+            factor = A[r, bw + q - r] / pivot
+            if factor == 0.0:
                 continue
-            P[j, i] += omega_jacobi * value
-            for q in range(4):
-                dj = STENCIL_DJ[q + 1]
-                di = STENCIL_DI[q + 1]
-                if 0 < j + dj < ny - 1 and 0 < i + di < nx - 1 and jacobi[j + dj, i + di]:
-                    P[j + dj, i + di] -= 0.25 * omega_jacobi * value
-    for j in range(ny):
-        for i in range(nx):
-            if P[j, i] < 0.0 or dry[j, i] or j == 0 or i == 0 or j == ny - 1 or i == nx - 1:
-                P[j, i] = 0.0
+            for c in range(q, min(q + bw + 1, m)):
+                A[r, bw + c - r] -= factor * A[q, bw + c - q]
+            rhs[r] -= factor * rhs[q]
+    for q in range(m - 1, -1, -1):
+        s = rhs[q]
+        for c in range(q + 1, min(q + bw + 1, m)):
+            s -= A[q, bw + c - q] * x[c]
+        x[q] = s / A[q, bw]
+    return True
+
+
+def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params, Kd, omega_gs, omega_jacobi,
+                     switch, dry, bw):
+    """One sweep of line relaxation along X (the entrainment direction) for L(P) = f, in place on P and H.
+
+    Venner & Lubrecht (2000, §8.4) relax point contacts line by line: all nodes of a row Y_j
+    change together, by the solution of a banded system, so that the strong coupling along X
+    through the film (the wedge and the deformation) is taken implicitly — the point-wise sweep
+    (:func:`point_relax`) converges slowly at heavy load because of it. Regimes as in
+    :func:`point_relax` (:func:`choose_regimes`, fixed at the start of the sweep). For row j the
+    unknowns are the changes delta_k of its interior nodes, each with its pattern
+    (:func:`distributive_pattern`: +1 at a Gauss–Seidel node; +1 at the node and -1/4 at its
+    distributive neighbours for a distributive one). Row i of the system is
+
+        sum_k dL_ji/d(pattern of k) delta_k = f_ji - L_ji,   |k - i| <= bw,
+
+    the exact local linearisation (:func:`pattern_derivative`, film changes through the
+    deformation coefficients Kd, which must reach |di| <= bw + 3 and |dj| <= 2). Nodes that are
+    dry, or cavitated (P = 0) and pushed further down (f - L > 0), or whose own derivative is
+    not negative, are held (delta = 0). The system is solved by :func:`band_solve`; if a pivot
+    fails the row falls back to the point-wise changes r/A_ii. Gauss–Seidel nodes take
+    P += omega_gs delta at once (clipped at 0), and the films of rows j..j+2 follow through Kd;
+    distributive changes are applied after the sweep with omega_jacobi
+    (:func:`apply_distributive`). Returns the number of distributive nodes.
+    """
+    ny, nx = P.shape
+    rho, eps, dle, drh = nodal_arrays(P, H, lam, viscosity_code, density_code, params)
+    jacobi = np.zeros((ny, nx), dtype=np.bool_)
+    choose_regimes(rho, eps, hx, hy, Kd, switch, jacobi)
+    delta = np.zeros((ny, nx))
+    m = nx - 2
+    width = 2 * bw + 1
+    A = np.zeros((m, width))
+    rhs = np.zeros(m)
+    x = np.zeros(m)
+    diag = np.zeros(m)
+    residual = np.zeros(m)
+    active = np.zeros(m, dtype=np.bool_)
+    change = np.zeros(nx)
+    pdj, pdi, pw, work_p, work_e, work_rh = pattern_work()
+    reach = Kd.shape[1]
+    count = 0
+    for j in range(1, ny - 1):
+        any_active = False
+        for q in range(m):
+            i = q + 1
+            r = f[j, i] - point_operator_at(j, i, P, H, rho, eps, hx, hy)
+            residual[q] = r
+            active[q] = False
+            if dry[j, i] or (P[j, i] <= 0.0 and r > 0.0):
+                continue
+            npat = distributive_pattern(j, i, 0, jacobi, pdj, pdi, pw, 0)
+            d = pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, npat, work_p, work_e,
+                                   work_rh)
+            if d < 0.0:
+                active[q] = True
+                diag[q] = d
+                any_active = True
+        if not any_active:
+            continue
+        for q in range(m):
+            for c in range(width):
+                A[q, c] = 0.0
+            x[q] = 0.0
+            if not active[q]:
+                A[q, bw] = -1.0
+                rhs[q] = 0.0
+                continue
+            rhs[q] = residual[q]
+            i = q + 1
+            for c in range(max(0, q - bw), min(m, q + bw + 1)):
+                if not active[c]:
+                    continue
+                if c == q:
+                    A[q, bw] = diag[q]
+                    continue
+                npat = distributive_pattern(j, c + 1, c - q, jacobi, pdj, pdi, pw, 0)
+                A[q, bw + c - q] = pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, npat,
+                                                      work_p, work_e, work_rh)
+        if not band_solve(A, rhs, m, bw, x):
+            for q in range(m):
+                x[q] = residual[q] / diag[q] if active[q] else 0.0
+        moved = False
+        for q in range(m):
+            i = q + 1
+            change[i] = 0.0
+            if not active[q]:
+                continue
+            if jacobi[j, i]:
+                delta[j, i] = x[q]
+                count += 1
+                continue
+            new = P[j, i] + omega_gs * x[q]
+            if new < 0.0:
+                new = 0.0
+            change[i] = new - P[j, i]
+            if change[i] != 0.0:
+                P[j, i] = new
+                moved = True
+        if not moved:
+            continue
+        for jj in range(j, min(j + 3, ny)):
+            dj = jj - j
+            for i in range(nx):
+                dh = 0.0
+                for k in range(max(1, i - reach + 1), min(nx - 1, i + reach)):
+                    if change[k] != 0.0:
+                        dh += Kd[dj, abs(i - k)] * change[k]
+                if dh == 0.0:
+                    continue
+                old = H[jj, i]
+                H[jj, i] = old + dh
+                if jj == j or old <= 0.0 or P[jj, i] <= 0.0:
+                    point_nodal_at(jj, i, P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh)
+                else:  # P unchanged off row j: only the gap term of epsilon moves
+                    ratio = max(H[jj, i], 0.0) / old
+                    eps[jj, i] *= ratio * ratio * ratio
+    apply_distributive(P, delta, jacobi, omega_jacobi, dry)
     return count
 
 
@@ -323,6 +518,8 @@ def prolong_bilinear(c, out):
 PY = {
     "point_residual": point_residual,
     "point_relax": point_relax,
+    "point_line_relax": point_line_relax,
+    "band_solve": band_solve,
     "deformation_direct_2d": deformation_direct_2d,
     "restrict_full_weighting": restrict_full_weighting,
     "prolong_bilinear": prolong_bilinear,

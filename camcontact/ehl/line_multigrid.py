@@ -339,8 +339,9 @@ _MAX_START_LEVEL = 6  # the dense start solver stays below ~1 s
 STAGNATION = (10, 5)
 
 
-def _stagnated(residuals: list[float]) -> bool:
-    cycles, window = STAGNATION
+def _stagnated(residuals: list[float], rule: tuple[int, int] = STAGNATION) -> bool:
+    """True after ``rule[0]`` cycles when the last ``rule[1]`` did not halve the best residual before them."""
+    cycles, window = rule
     return len(residuals) >= cycles and min(residuals[-window:]) > 0.5 * min(residuals[:-window])
 
 

@@ -3,18 +3,22 @@
 Full Approximation Scheme on the grids n_k = 16 2^(k-1) + 1 nodes per direction
 (:mod:`camcontact.ehl.point_problem`) for the discrete problem of :mod:`._point_kernels`:
 
-* **relaxation** — the point-wise hybrid sweep :func:`._point_kernels.point_relax`:
-  Gauss–Seidel where the Poiseuille coefficient dominates the wedge's own response
-  (differential character), Jacobi-distributive with the five-point pattern (+1 at the node,
-  -1/4 at its neighbours) elsewhere (integral character), divisors from the exact local
-  linearisation, cavitation by projection (P <- max(P, 0)); the films are recomputed by FFT
-  convolution (DC-FFT) before every sweep. This is the point-wise version of the line
-  relaxation Venner & Lubrecht use for point contacts — simpler; measured to converge for
-  M = 10..100, L = 5..25, D = 0.25..4 (4-17 W-cycles on 257^2) and, slowly, at heavy load
-  (M = 1000, L = 10: 45-70 W-cycles on 129^2 and 257^2, residual factor about 0.9 per cycle,
-  hence ``max_cycles`` = 80; with Dowson–Higginson on 257^2 only the most conservative attempt
-  of :data:`ROBUST` converges). Line relaxation (Gauss–Seidel / distributive lines along X) is
-  the known remedy for the slow rate;
+* **relaxation** — line relaxation along X (:func:`._point_kernels.point_line_relax`, Venner &
+  Lubrecht §8.4): the nodes of each row Y_j change together by the solution of a banded system
+  (half-bandwidth ``band``) with the exact local linearisation, so that the strong coupling along
+  the flow through the wedge and the deformation is implicit; Gauss–Seidel where the Poiseuille
+  coefficient dominates the wedge's own response (differential character), Jacobi-distributive
+  with the five-point pattern (+1 at the node, -1/4 at its neighbours) elsewhere (integral
+  character), cavitation by projection (P <- max(P, 0)); the films are recomputed by FFT
+  convolution (DC-FFT) before every sweep. The point-wise sweep
+  (:func:`._point_kernels.point_relax`, ``relaxation="point"``) remains for the last two, most
+  conservative attempts of :data:`ROBUST`. Measured (W-cycles, 257^2): M = 10..100, L = 5..10,
+  D = 0.25..4 in 2-6 cycles; L = 25 (M = 20) in 14 cycles of the second attempt (the first
+  diverges); M = 1000, L = 10 in 5-8 cycles (the point-wise sweep: 45-70, residual factor about
+  0.9 per cycle); M = 3000 in 11 (257^2) and 26 (513^2) cycles with the cavitation set frozen;
+* **cavitation boundary** — when H_min alternates from cycle to cycle while the boundary hops
+  between nodes, the dry set of the finest grid (and its injections) is frozen, as in the line
+  solver; an attempt whose residual has not halved in ``STAGNATION[1]`` cycles stops;
 * **coarse-grid correction** — residuals restricted by 9-point full weighting, the solution by
   injection, the coarse problem carrying the FAS right-hand sides of the Reynolds equation and
   of the load balance; bilinear interpolation of the corrections. At the cavitation boundary
@@ -46,6 +50,7 @@ import scipy.fft
 from ..errors import ConvergenceError, InputError
 from . import _point_kernels
 from .attempts import run_ladder
+from .line_multigrid import _alternating, _stagnated
 from .line_solution import ConvergenceRecord
 from .point_problem import PointEHLProblem, point_grid_points
 from .point_solution import PointEHLSolution
@@ -61,11 +66,16 @@ class PointMultigridSettings:
     """Numerical settings of :func:`solve_point_multigrid`."""
 
     cycle: str = attrs.field(default="W", validator=attrs.validators.in_(("V", "W")))
-    pre_sweeps: int = 2
+    #: "line": line relaxation along X (banded line systems); "point": the point-wise sweep
+    relaxation: str = attrs.field(default="line", validator=attrs.validators.in_(("line", "point")))
+    #: half-bandwidth of the line systems (coupling along X kept implicit), 2..4 (1 diverges: the
+    #: distributive patterns of the neighbours reach two columns)
+    band: int = attrs.field(default=2, validator=attrs.validators.in_((2, 3, 4)))
+    pre_sweeps: int = 1
     post_sweeps: int = 1
     coarsest_sweeps: int = 10
-    omega_gs: float = 0.6
-    omega_jacobi: float = 0.4
+    omega_gs: float = 1.0
+    omega_jacobi: float = 0.6
     #: Gauss–Seidel where sum(eps faces)/h^2 >= switch x the wedge's own response
     switch: float = 1.0
     h0_relaxation: float = 0.05
@@ -82,9 +92,10 @@ class PointMultigridSettings:
 
 
 #: conservative settings of the further attempts after a failed one
-ROBUST = ({"omega_gs": 0.5, "omega_jacobi": 0.25, "switch": 2.0, "h0_relaxation": 0.02},
-          {"omega_gs": 0.4, "omega_jacobi": 0.15, "switch": 4.0, "h0_relaxation": 0.01, "pre_sweeps": 3,
-           "post_sweeps": 2})
+ROBUST = ({"omega_gs": 0.6, "omega_jacobi": 0.4, "pre_sweeps": 2},
+          {"relaxation": "point", "omega_gs": 0.6, "omega_jacobi": 0.4, "pre_sweeps": 2},
+          {"relaxation": "point", "omega_gs": 0.4, "omega_jacobi": 0.15, "switch": 4.0, "h0_relaxation": 0.01,
+           "pre_sweeps": 3, "post_sweeps": 2})
 
 
 def _kernel_table(nx: int, ny: int, hx: float, hy: float) -> np.ndarray:
@@ -111,7 +122,7 @@ class _FFTDeformation:
         full[:, self.shape[1] - nx + 1:] = full[:, 1:nx][:, ::-1]
         self.spectrum = scipy.fft.rfft2(full, workers=workers)
         self.nx, self.ny, self.workers = nx, ny, workers
-        self.local = table[:4, :5].copy()  # dH/dP between nodes (|dj|, |di|) apart, for the relaxation
+        self.local = table[:4, :8].copy()  # dH/dP between nodes (|dj|, |di|) apart, for the relaxation
 
     def __call__(self, P: np.ndarray) -> np.ndarray:
         spectrum = scipy.fft.rfft2(P, s=self.shape, workers=self.workers)
@@ -133,15 +144,15 @@ class _Level:
         self.hy = float(self.Y[1] - self.Y[0])
         self.geometry = 0.5 * self.X[None, :] ** 2 + 0.5 * problem.D * self.Y[:, None] ** 2
         self.deform = _FFTDeformation(self.n, self.n, self.hx, self.hy, workers) if problem.elastic else None
-        self.Kd = self.deform.local if problem.elastic else np.zeros((4, 5))
-        self.no_dry = np.zeros((self.n, self.n), dtype=np.bool_)
+        self.Kd = self.deform.local if problem.elastic else np.zeros((4, 8))
+        self.dry = np.zeros((self.n, self.n), dtype=np.bool_)  # nodes held at P = 0 (frozen cavitation)
 
 
 class _Solver:
     def __init__(self, problem: PointEHLProblem, levels: int, settings: PointMultigridSettings, compiled: bool):
         self.problem, self.settings = problem, settings
         kernel = _point_kernels.compiled if compiled else _point_kernels.PY.__getitem__
-        self._relax = kernel("point_relax")
+        self._relax = kernel("point_line_relax" if settings.relaxation == "line" else "point_relax")
         self._residual = kernel("point_residual")
         self._restrict = kernel("restrict_full_weighting")
         self._prolong = kernel("prolong_bilinear")
@@ -171,16 +182,24 @@ class _Solver:
 
     def relax(self, k: int, P: np.ndarray, H0: float, f: np.ndarray, sweeps: int) -> None:
         level, s = self.levels[k], self.settings
+        extra = (s.band,) if s.relaxation == "line" else ()
         for _ in range(sweeps):
             H = self.film(k, P, H0)
             self._relax(P, H, f, level.hx, level.hy, self.lam, self.codes[0], self.codes[1], self.params, level.Kd,
-                        s.omega_gs, s.omega_jacobi, s.switch, level.no_dry)
+                        s.omega_gs, s.omega_jacobi, s.switch, level.dry, *extra)
             self.work += (level.n / self.levels[-1].n) ** 2
 
     def complementarity(self, k: int, P: np.ndarray, H0: float, f: np.ndarray) -> np.ndarray:
         """f - L(P) where P > 0; at dry nodes only the part that would take pressure (f - L < 0)."""
         r = f - self.operator(k, P, self.film(k, P, H0))
         return np.where(P > 0.0, r, np.minimum(r, 0.0))
+
+    def freeze_dry(self, P: np.ndarray) -> None:
+        """Hold the currently cavitated nodes of the finest grid (and their injections) at P = 0."""
+        dry = P <= 0.0
+        for level in reversed(self.levels):
+            level.dry = np.ascontiguousarray(dry)
+            dry = dry[::2, ::2]
 
     # ------------------------------------------------------------------ cycles
     def cycle(self, k: int, P: np.ndarray, H0: float, f: np.ndarray, f_load: float, kind: str) -> float:
@@ -275,6 +294,10 @@ def _start_H0(problem: PointEHLProblem, solver: _Solver, k: int, P: np.ndarray) 
     return float(estimate - deformation - level.geometry[centre])
 
 
+#: stop an attempt after this many cycles when the last window of them did not halve the residual
+#: (the point-wise fallback converges at about 0.9 per cycle, hence the long window)
+STAGNATION = (20, 10)
+
 #: a pressure this many times p_h means the iteration has blown up (hard cases peak at about 10)
 BLOW_UP = 1e4
 
@@ -328,6 +351,9 @@ def _solve_once(problem: PointEHLProblem, levels: int, tolerance: float | None,
     converged = False
     message = ""
     previous = None
+    changes: list[float] = []  # of H_min from cycle to cycle
+    wet_counts: list[int] = []
+    frozen_at = 0
     for _ in range(settings.max_cycles):
         H0 = solver.cycle(top, P, H0, zero, 0.0, settings.cycle)
         if not _finite(P, H0):
@@ -350,16 +376,32 @@ def _solve_once(problem: PointEHLProblem, levels: int, tolerance: float | None,
             if np.max(np.abs(current - previous)) < tolerance * scale and abs(loads[-1]) < tolerance:
                 converged = True
                 break
+        if tolerance is not None and _stagnated(residuals[frozen_at:], STAGNATION):
+            message = (message + "; " if message else "") + (
+                f"stagnated: residual not halved in the last {STAGNATION[1]} cycles")
+            break
+        if previous is not None:
+            changes.append(current[0] - previous[0])
+        wet_counts.append(int(np.count_nonzero(P)))
+        if not frozen_at and _alternating(changes) and len(set(wet_counts[-3:])) > 1:
+            # the cavitation boundary hops between nodes from cycle to cycle (H_min alternates): hold
+            # the dry set of the finest grid (and its injections) and let the cycles converge
+            solver.freeze_dry(P)
+            frozen_at = len(residuals)
+            message = f"cavitation set frozen after cycle {frozen_at} (boundary oscillation)"
         previous = current
     else:
         if tolerance is None:
             converged = True
-            message = f"fixed number of cycles ({settings.max_cycles})"
+            message = (message + "; " if message else "") + f"fixed number of cycles ({settings.max_cycles})"
         else:
-            message = f"no convergence to {tolerance:g} in {settings.max_cycles} cycles"
-    if converged and H.min() <= 0.0:
+            message = (message + "; " if message else "") + (
+                f"no convergence to {tolerance:g} in {settings.max_cycles} cycles")
+    if H.min() <= 0.0:
         converged = False
-        message = f"film closed: H_min = {H.min():.3g} <= 0 (grid too coarse for this load?)"
+        message = (message + "; " if message else "") + (
+            f"film closed: H_min = {H.min():.3g} <= 0 (the grid is too coarse for this load: "
+            f"M = {problem.M:.4g}; finer levels, or a film formula)")
     record = _record(solver, residuals, loads, works, start, converged, message, tolerance)
     return PointEHLSolution(problem=problem, level=levels, X=finest.X, Y=finest.Y, P=P, H=H, H0=float(H0),
                             record=record, settings=settings)

@@ -85,18 +85,64 @@ def test_relaxation_twin():
     assert np.all(results[0][0] >= 0)
 
 
-def test_relaxation_reduces_the_residual_on_one_grid():
-    """Many sweeps of the hybrid point relaxation alone converge the 33^2 problem (no multigrid):
-    checks the local linearisation signs."""
+def _local_table(hx, hy, rows=4, columns=8):
+    return 2 / math.pi**2 * np.array([[_point_kernels.kernel_rectangle(di * hx, dj * hy, hx, hy)
+                                       for di in range(columns)] for dj in range(rows)])
+
+
+def test_line_relaxation_twin():
     problem, X, Y, hx, hy, P, H = _state()
-    kernel = _point_kernels.compiled("point_relax")
-    residual = _point_kernels.compiled("point_residual")
-    Kd = 2 / math.pi**2 * np.array([[_point_kernels.kernel_rectangle(di * hx, dj * hy, hx, hy) for di in range(5)]
-                                    for dj in range(4)])
     f = np.zeros_like(P)
     dry = np.zeros(P.shape, dtype=bool)
-    H0 = -0.55
+    results = []
+    for kernel in (_point_kernels.PY["point_line_relax"], _point_kernels.compiled("point_line_relax")):
+        Pk, Hk = P.copy(), H.copy()
+        count = kernel(Pk, Hk, f, hx, hy, problem.lam, *problem.law_codes, problem.law_parameters,
+                       _local_table(hx, hy), 1.0, 0.6, 1.0, dry, 2)
+        results.append((Pk, Hk, count))
+    np.testing.assert_allclose(results[1][0], results[0][0], rtol=1e-12, atol=1e-14)
+    np.testing.assert_allclose(results[1][1], results[0][1], rtol=1e-12, atol=1e-14)
+    assert results[0][2] == results[1][2] > 0  # both regimes occur
+    assert np.all(results[0][0] >= 0) and not np.array_equal(results[0][0], P)
+
+
+def test_band_solve_against_dense_solve():
+    """The banded elimination of the line systems equals numpy's dense solve on a negative
+    diagonally dominant band matrix, and refuses a matrix whose pivot is not negative."""
+    rng = np.random.default_rng(5)
+    m, bw = 12, 2
+    dense = np.zeros((m, m))
+    for q in range(m):
+        for c in range(max(0, q - bw), min(m, q + bw + 1)):
+            dense[q, c] = rng.uniform(-1, 1)
+        dense[q, q] = -6.0 - rng.uniform()
+    band = np.array([[dense[q, q + c - bw] if 0 <= q + c - bw < m else 0.0 for c in range(2 * bw + 1)]
+                     for q in range(m)])
+    rhs = rng.normal(size=m)
+    for kernel in (_point_kernels.band_solve, _point_kernels.compiled("band_solve")):
+        x = np.zeros(m)
+        assert kernel(band.copy(), rhs.copy(), m, bw, x)
+        np.testing.assert_allclose(x, np.linalg.solve(dense, rhs), rtol=1e-12)
+    bad = band.copy()
+    bad[3, bw] = 0.5
+    assert not _point_kernels.band_solve(bad, rhs.copy(), m, bw, np.zeros(m))
+
+
+def _single_grid_reduction(M, kernel_name, omegas, sweeps, extra=()):
+    """Residual reduction of ``sweeps`` sweeps of one relaxation alone (no multigrid) on 33^2 from
+    the dry Hertz pressure, H0 updated after each sweep by the load error."""
+    problem = PointEHLProblem(M=M, L=10, density="incompressible")
+    X, Y = problem.grid(2)
+    hx, hy = X[1] - X[0], Y[1] - Y[0]
+    P = problem.hertz_pressure(X, Y)
+    P[0, :] = P[-1, :] = P[:, 0] = P[:, -1] = 0.0
     geometry = 0.5 * X[None, :] ** 2 + 0.5 * Y[:, None] ** 2
+    H0 = -1.0 + (0.05 if M < 100 else 0.005)
+    kernel = _point_kernels.compiled(kernel_name)
+    residual = _point_kernels.compiled("point_residual")
+    Kd = _local_table(hx, hy)
+    f = np.zeros_like(P)
+    dry = np.zeros(P.shape, dtype=bool)
 
     def complementarity(P, H0):
         out = np.empty_like(P)
@@ -105,12 +151,35 @@ def test_relaxation_reduces_the_residual_on_one_grid():
         return np.mean(np.abs(np.where(P > 0, out, np.maximum(out, 0.0))))
 
     first = complementarity(P, H0)
-    for _ in range(800):
+    for _ in range(sweeps):
         kernel(P, H0 + geometry + point_deformation_fft(P, hx, hy), f, hx, hy, problem.lam, *problem.law_codes,
-               problem.law_parameters, Kd, 0.8, 0.4, 1.0, dry)
+               problem.law_parameters, Kd, *omegas, 1.0, dry, *extra)
         H0 += 0.05 * (hx * hy * P.sum() - 2 * math.pi / 3)
-    assert complementarity(P, H0) < 1e-6 * first
-    assert hx * hy * P.sum() == pytest.approx(2 * math.pi / 3, rel=1e-6)
+    assert hx * hy * P.sum() == pytest.approx(2 * math.pi / 3, rel=1e-2)  # the load follows
+    return complementarity(P, H0) / first
+
+
+def test_relaxation_reduces_the_residual_on_one_grid():
+    """Point-wise sweeps alone (no multigrid) converge the 33^2 problem at M = 20 (measured: 4e-10
+    after 800 sweeps): checks the signs of the local linearisation."""
+    assert _single_grid_reduction(20.0, "point_relax", (0.8, 0.4), 800) < 1e-6
+
+
+def test_line_relaxation_converges_on_one_grid():
+    """Line sweeps alone converge the 33^2 problem at M = 20 (measured: 7e-8 after 200 sweeps, the
+    point-wise sweep 5e-3): checks the line matrices' signs and the film update."""
+    assert _single_grid_reduction(20.0, "point_line_relax", (1.0, 0.6), 200, (2,)) < 1e-6
+
+
+@pytest.mark.parametrize("M", [20.0, 1000.0])
+def test_line_relaxation_beats_point_relaxation_per_sweep(M):
+    """What line relaxation is for: after 100 sweeps on one grid the residual of the line sweep is far
+    below that of the point-wise sweep (measured: 2.6e-4 vs 7.4e-2 at M = 20, 2.4e-4 vs 6.9e-2 at
+    M = 1000; asserted: at least 20x lower). At M = 1000 the 33^2 grid cannot resolve the film and both
+    stall near 5e-5 later, which is why this compares the early rate."""
+    line = _single_grid_reduction(M, "point_line_relax", (1.0, 0.6), 100, (2,))
+    point = _single_grid_reduction(M, "point_relax", (0.8, 0.4), 100)
+    assert line < 0.05 * point
 
 
 def test_transfer_twins():
@@ -230,7 +299,7 @@ def test_high_L_converges():
 
 def test_heavy_load_converges_near_hertzian():
     """M = 1000, L = 10 (Roelands, incompressible), 129^2 converges with the default settings (measured:
-    53 W-cycles, residual factor about 0.9 per cycle, the first attempt). P is near-Hertzian (measured:
+    8 W-cycles with line relaxation, the first attempt; 53 with the point-wise sweep). P is near-Hertzian (measured:
     P_max = 1.0013, |P - P_Hertz| <= 0.024 inside R < 0.9). The central film on this grid is far from
     grid-converged: H_c (Moes) = 2.52, 0.62 x Nijenbanning–Venner–Moes (4.04); on 257^2 3.56 (0.88 x,
     tests/literature/test_point_ehl_literature.py) — asserted here is 0.55..0.70 x NVM."""
@@ -249,19 +318,20 @@ def test_heavy_load_converges_near_hertzian():
 
 
 def test_heavy_load_cut_short_fails_loudly_never_nan():
-    """M = 1000, L = 10, 129^2 with max_cycles = 12: it needs about 45-55 cycles, so every attempt ends
-    unconverged; the solver must say so with a ConvergenceWarning (ConvergenceError when strict) and
+    """M = 1000, L = 10, 129^2 with max_cycles = 3: it needs about 8 cycles (the point-wise fallback
+    attempt 45-55), so every attempt ends unconverged; the solver must say so with a ConvergenceWarning
+    (ConvergenceError when strict) and
     return finite fields — never NaN. (Loads far beyond, M ~ 8e4, fail loudly at the default settings:
     tests/literature/test_point_multigrid_film_model.py.)"""
     problem = PointEHLProblem(M=1000, L=10)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        s = solve_point_multigrid(problem, 4, settings=PointMultigridSettings(max_cycles=12))
+        s = solve_point_multigrid(problem, 4, settings=PointMultigridSettings(max_cycles=3))
     assert np.all(np.isfinite(s.P)) and np.all(np.isfinite(s.H)) and np.isfinite(s.H0)
     assert not s.record.converged and s.record.message
     assert any(issubclass(w.category, ConvergenceWarning) for w in caught)
     with pytest.raises(ConvergenceError):
-        solve_point_multigrid(problem, 4, settings=PointMultigridSettings(max_cycles=12), strict=True)
+        solve_point_multigrid(problem, 4, settings=PointMultigridSettings(max_cycles=3), strict=True)
 
 
 def test_speed_benchmark_quick(tmp_path):
