@@ -39,7 +39,7 @@ class MultigridPoint(FilmModel):
         Raise ConvergenceError when the solver does not converge (default: warn).
 
     Validity: measured to converge for Moes M = 10..100, L = 5..25, D = Rx/Ry = 0.25..4, and at
-    heavy load (M = 1000, L = 10: 5-8 cycles; M = 3000: 257^2 and 513^2), but the heavy-load film
+    heavy load (M = 1000, L = 10: 5-9 cycles; M = 3000: 257^2 and 513^2), but the heavy-load film
     needs fine grids: at M = 1000 H_c is 38 % below Nijenbanning on 129^2, 12 % on 257^2 and 5 % on
     513^2; at M = 3000 31 % (257^2) and 11 % (513^2). At M ~ 1e4 the film closes on 257^2 and the
     solve ends in a ConvergenceWarning (ConvergenceError when strict) saying so.
