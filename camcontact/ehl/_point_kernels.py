@@ -323,10 +323,6 @@ def point_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params, Kd, 
             else:
                 npat = distributive_pattern(j, i, 0, jacobi, pdj, pdi, pw, 0)
                 d = pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, npat, work_p, work_e, work_rh)
-                for q in range(5):
-                    pdj[q] = 0
-                    pdi[q] = 0
-                    pw[q] = 0.0
                 if d < 0.0:
                     delta[j, i] = r / d
                 count += 1
