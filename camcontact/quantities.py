@@ -98,7 +98,7 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("H0", "", "", "rigid-body approach H0 of the numerical solution (Hertz units, x0 = b)"),
         _q("H_min", "", "", "minimum film H_min = h_min R / b^2 of the numerical solution"),
         _q("H_c", "", "", "central film H_c = h_c R / b^2 of the numerical solution"),
-        _q("spike_pressure", "", "", "pressure spike height P_s = p_s / p_h of the numerical solution"),
+        _q("spike_pressure", "", "", "pressure spike height P_s = p_s / p_h of the numerical solution (NaN: no distinct spike)"),
         _q("friction_force", "N", "N", "friction force at the contact"),
         _q("friction_coefficient", "", "", "friction force / normal force"),
         _q("friction_power", "W", "W", "friction power loss"),

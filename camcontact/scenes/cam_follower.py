@@ -238,7 +238,7 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
                              "'multigrid'")
         pick = (lambda attr: np.array([getattr(sol, attr) if sol is not None else 0.0 for sol in solutions]))
         return {"H0": pick("H0"), "H_min": pick("H_min"), "H_c": pick("H_c"),
-                "spike_pressure": np.array([sol.spike[0] if sol is not None else 0.0 for sol in solutions])}
+                "spike_pressure": np.array([_spike_height(sol) for sol in solutions])}
 
     def model_state(s):
         return {**s, **{alias: s[name] for alias, name in _ALIASES.items()}}
@@ -565,6 +565,15 @@ def _solve_numerically(model, state, previous):
             return produced, None
         best = best or produced  # not converged: the record says so in the regime column
     return (best, None) if best is not None else (None, failure)
+
+
+def _spike_height(solution) -> float:
+    """P_s of the numerical solution's pressure spike; NaN when it has no distinct spike (a single
+    pressure maximum), 0 where no numerical solution was made (contact lost, u_m = 0, formula fallback)."""
+    if solution is None:
+        return 0.0
+    spike = solution.spike
+    return math.nan if spike is None else spike[0]
 
 
 def _films(model) -> tuple[str, ...]:
