@@ -36,107 +36,41 @@ from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 import attrs
+import numpy as np
 
 from .errors import InputError
 from .quantities import QUANTITIES
+from .step_graph import EFFECTS, SceneGraph, Step, StepRecord, builder_for
 
-__all__ = ["EFFECTS", "Analysis", "Result", "SceneGraph", "Step", "StepRecord", "checked_request"]
-
-#: Physical effects a scene may switch on (each scene supports a subset).
-EFFECTS = ("elasticity", "piezoviscosity", "compressibility", "thermal", "dynamics", "squeeze", "spin")
-
-
-@attrs.frozen
-class Step:
-    """One computation of a scene graph.
-
-    ``run`` receives a mapping holding (at least) ``requires`` and returns a mapping with
-    every name in ``provides``. ``check`` (optional) validates up front, before anything runs.
-    """
-
-    name: str
-    requires: tuple[str, ...]
-    provides: tuple[str, ...]
-    run: Callable[[Mapping[str, Any]], Mapping[str, Any]] = attrs.field(repr=False)
-    model: str = ""
-    version: str = ""
-    check: Callable[[], None] | None = attrs.field(default=None, repr=False)
-    #: distinguishes two model objects of the same name (e.g. differently parameterised)
-    identity: Any = attrs.field(default=None, repr=False)
-
-
-@attrs.frozen
-class SceneGraph:
-    """What a scene builder returns for one variant."""
-
-    kind: str
-    inputs: Mapping[str, Any]
-    steps: tuple[Step, ...]
-    default_outputs: tuple[str, ...]
-    input_hints: Mapping[str, str] = attrs.field(factory=dict)
-    plotter: Callable[..., Any] | None = attrs.field(default=None, repr=False)
-    effects: frozenset = frozenset()  #: the effects in force (the scene's defaults if none were asked)
-    #: name of the input that indexes array outputs (e.g. ``"cam_angle"``), None for one-row scenes
-    index: str | None = None
-    #: the outputs that are arrays over ``index`` (the others are scalars: summaries)
-    per_index: frozenset = frozenset()
-
-
-@attrs.frozen
-class StepRecord:
-    """What ran: step, model and version, variant, wall time [s]."""
-
-    step: str
-    model: str
-    version: str
-    variant: str
-    wall_time: float
-
-
-# ----------------------------------------------------------------------------- builders
-_BUILDERS: dict[type, Callable[..., SceneGraph]] = {}
-
-
-def scene_builder(component_type: type):
-    """Register the graph builder of a scene component type (used by :mod:`camcontact.scenes`)."""
-
-    def _register(function):
-        _BUILDERS[component_type] = function
-        return function
-
-    return _register
-
-
-def checked_request(kind: str, models: Mapping[str, Any], effects: Iterable[str] | None, *, slots: Iterable[str],
-                    supported: Iterable[str], default: Iterable[str]) -> frozenset:
-    """What a scene builder was asked, checked: the effects in force (``default`` when none were
-    asked); an effect the scene does not support or a model slot it does not have is an InputError."""
-    supported = frozenset(supported)
-    effects = frozenset(default) if effects is None else frozenset(effects)
-    unsupported = sorted(effects - supported)
-    if unsupported:
-        raise InputError(f"effects {unsupported} do not apply to a {kind} scene; it supports {sorted(supported)}")
-    slots = tuple(slots)
-    unknown = sorted(set(models) - set(slots))
-    if unknown:
-        raise InputError(f"{kind} scene: unknown model slots {unknown}; slots are {', '.join(map(repr, slots))}")
-    return effects
-
-
-def _builder_for(scene: Any) -> Callable[..., SceneGraph]:
-    from . import scenes  # noqa: F401  (registers the built-in scene builders)
-
-    for cls in type(scene).__mro__:
-        if cls in _BUILDERS:
-            return _BUILDERS[cls]
-    kinds = ", ".join(sorted(c.__name__ for c in _BUILDERS))
-    raise InputError(f"Analysis: {type(scene).__name__} is not a scene; scenes are: {kinds}")
+__all__ = ["Analysis", "Result"]
 
 
 def _model_label(model: Any) -> str:
     if isinstance(model, str):
         return model
     return getattr(model, "name", None) or getattr(model, "__name__", None) or type(model).__name__
+
+
+def input_token(value: Any) -> Any:
+    """A hashable stand-in for a graph input that is equal for equal inputs: variants share a step
+    whose inputs and upstream steps agree. Numbers, text, arrays, Quantities and attrs instances
+    (components, model objects) compare by value; any other object by identity."""
+    if value is None or isinstance(value, (bool, int, float, complex, str, bytes)):
+        return (type(value).__name__, value)
+    if isinstance(value, np.ndarray):
+        return ("ndarray", value.shape, value.dtype.str, value.tobytes() if value.dtype != object else id(value))
+    if isinstance(value, np.generic):
+        return (type(value).__name__, value.item())
+    if isinstance(value, (tuple, list, frozenset, set)):
+        items = [input_token(v) for v in value]
+        return (type(value).__name__, tuple(sorted(items, key=repr) if isinstance(value, (set, frozenset)) else items))
+    if isinstance(value, Mapping):
+        return ("mapping", tuple(sorted(((repr(k), input_token(v)) for k, v in value.items()), key=repr)))
+    if hasattr(value, "magnitude") and hasattr(value, "units"):  # a pint Quantity
+        return ("quantity", str(value.units), input_token(np.asarray(value.magnitude)))
+    if attrs.has(type(value)):
+        return (type(value), tuple(input_token(getattr(value, field.name)) for field in attrs.fields(type(value))))
+    return ("id", id(value))
 
 
 # ----------------------------------------------------------------------------- analysis
@@ -165,7 +99,7 @@ class Analysis:
         effects: Iterable[str] | None = None,
     ):
         self.scene = scene
-        self._builder = _builder_for(scene)
+        self._builder = builder_for(scene)
         self.models = dict(models or {})
         self.effects = None if effects is None else frozenset(effects)
         if self.effects is not None:
@@ -202,7 +136,7 @@ class Analysis:
             variants.append((label, chosen))
         return variants
 
-    def _plan(self, models: dict[str, Any]) -> tuple[SceneGraph, tuple[str, ...], list[tuple[Step, tuple]]]:
+    def _plan(self, models: dict[str, Any]) -> tuple[SceneGraph, tuple[str, ...], list[tuple[Step, tuple, tuple]]]:
         graph = self._builder(self.scene, models=models, effects=self.effects)
         providers: dict[str, Step] = {}
         for step in graph.steps:
@@ -257,15 +191,19 @@ class Analysis:
             visit(output)
         for step in order:
             if step.check is not None:
-                step.check()
-        # a step's signature names it, its model and the signatures of its upstream steps,
-        # so that variants share exactly the steps that do not depend on a varied model
+                step.check(graph.inputs)
+        # a step's signature: its name, model, the values of the graph inputs it reads and the
+        # signatures of its upstream steps, so that variants share exactly the steps that do not
+        # depend on a varied model
         signatures: dict[str, tuple] = {}
+        labels: dict[str, tuple[str, str]] = {}
         for step in order:
+            labels[step.name] = step.label(graph.inputs)
             upstream = sorted({signatures[providers[k].name] for k in step.requires if k in providers
                                and k not in graph.inputs}, key=repr)
-            signatures[step.name] = (step.name, step.model, step.version, step.identity, tuple(upstream))
-        return graph, outputs, [(step, signatures[step.name]) for step in order]
+            read = tuple((k, input_token(graph.inputs[k])) for k in step.requires if k in graph.inputs)
+            signatures[step.name] = (step.name, *labels[step.name], read, tuple(upstream))
+        return graph, outputs, [(step, signatures[step.name], labels[step.name]) for step in order]
 
     # --------------------------------------------------------------- running
     def run(self) -> Result:
@@ -278,7 +216,7 @@ class Analysis:
         for label, _ in self.variants:
             graph, outputs, order = self.plans[label]
             state: dict[str, Any] = dict(graph.inputs)
-            for step, key in order:
+            for step, key, (model, version) in order:
                 if key not in cache:
                     start = time.perf_counter()
                     produced = dict(step.run(state))
@@ -287,7 +225,7 @@ class Analysis:
                     if missing:
                         raise RuntimeError(f"step {step.name!r} did not provide {missing}")
                     cache[key] = produced
-                    records.append(StepRecord(step.name, step.model, step.version, label, elapsed))
+                    records.append(StepRecord(step.name, model, version, label, elapsed))
                 state.update(cache[key])
             row = {name: state[name] for name in outputs}
             if graph.index is not None:
@@ -313,7 +251,7 @@ class Analysis:
 
     def sweep(self, grid: Any, *, executor: Any = None, progress: bool | None = None, errors: str = "record",
               table: str = "auto", units: Mapping[str, str] | None = None, chunksize: int | None = None):
-        """This analysis over many cases: one tidy pandas DataFrame (see :mod:`camcontact.sweep`).
+        """This analysis over many cases: one tidy pandas DataFrame (see :mod:`camcontact.sweep_cases`).
 
         ``grid`` maps field paths of the scene (``"speed"``, ``"cam.base_radius"``) to values (the
         cartesian product is swept) or is a DataFrame of cases; ``executor`` is any
@@ -328,16 +266,16 @@ class Analysis:
         >>> list(frame.columns), round(float(frame["p_h [MPa]"][1] / frame["p_h [MPa]"][0]), 6)
         (['load [kN]', 'p_h [MPa]', 'error'], 2.0)
         """
-        from .sweep import run_sweep
+        from .sweep_cases import run_sweep
 
-        return run_sweep(self.scene, grid, outputs=self.requested, models=self.models, effects=self.effects,
+        return run_sweep(type(self), self.scene, grid, outputs=self.requested, models=self.models, effects=self.effects,
                          executor=executor, progress=progress, errors=errors, table=table, units=units,
                          chunksize=chunksize)
 
     def steps(self, variant: str | None = None) -> list[str]:
         """Names of the steps that :meth:`run` will execute (for the first or a given variant)."""
         label = self.variants[0][0] if variant is None else variant
-        return [step.name for step, _ in self.plans[label][2]]
+        return [step.name for step, _, _ in self.plans[label][2]]
 
 
 @attrs.frozen

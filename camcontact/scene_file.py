@@ -169,7 +169,7 @@ def parse_scene(text: str, where: str = "scene") -> Scene:
         raise InputError(f"{where}: [sweep] must be a table of path = [value, ...] (e.g. speed = [\"500 rpm\", "
                          f"\"1000 rpm\"], \"cam.base_radius\" = [\"30 mm\", \"40 mm\"])")
     if sweep:
-        from .sweep import check_path
+        from .sweep_cases import check_path
 
         for path in sweep:
             check_path(component, path)

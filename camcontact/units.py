@@ -36,6 +36,7 @@ __all__ = [
     "above_absolute_zero",
     "format_quantity",
     "in_range",
+    "instance_of",
     "non_negative",
     "number_field",
     "one_of",
@@ -293,6 +294,16 @@ def one_of(*choices: Any):
     def _validate(instance, attribute, value):
         if value not in choices:
             raise InputError(f"{_name(instance, attribute)} = {value!r}; allowed: {', '.join(map(repr, choices))}")
+
+    return _validate
+
+
+def instance_of(cls: type):
+    """attrs validator: the value is a ``cls`` (InputError naming the field, the value and the class)."""
+
+    def _validate(instance, attribute, value):
+        if not isinstance(value, cls):
+            raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}: expected a {cls.__name__}")
 
     return _validate
 

@@ -14,9 +14,8 @@ import attrs
 
 from ..errors import InputError
 from ..kinematics.ball_cone import overrange, ratio_of_tilt, tilt_of_ratio
-from ..units import (ANGLE, Component, Quantity, above_absolute_zero, format_quantity, in_range, non_negative,
-                     number_field, one_of, positive, quantity_field)
-from .line_contact import _instance_of
+from ..units import (ANGLE, Component, Quantity, above_absolute_zero, format_quantity, in_range, instance_of,
+                     non_negative, number_field, one_of, positive, quantity_field)
 from .lubricant import Lubricant
 from .material import Material
 
@@ -86,9 +85,9 @@ class BallConeCVT(Component):
     cam_ramp_angle: Quantity = quantity_field(ANGLE, validators=_open_angle())
     cam_radius: Quantity = quantity_field("[length]", validators=[positive("m")])
     cam_ball_count: int = attrs.field(validator=_count)
-    material: Material = attrs.field(validator=_instance_of(Material))
+    material: Material = attrs.field(validator=instance_of(Material))
     traction_coefficient: float = number_field(validators=[in_range(0.0, 1.0, lower_inclusive=False)])
-    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(_instance_of(Lubricant)))
+    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Lubricant)))
     cone_small_diameter: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
     ratio_convention: str = attrs.field(default="reduction", validator=one_of("reduction", "speed"))
@@ -182,7 +181,7 @@ class LoadedBallConeCVT(Component):
     """
 
     name: str = "operating point"
-    cvt: BallConeCVT = attrs.field(validator=_instance_of(BallConeCVT))
+    cvt: BallConeCVT = attrs.field(validator=instance_of(BallConeCVT))
     power: Quantity = quantity_field("[power]", validators=[positive("W")])
     input_speed: Quantity = quantity_field("1/[time]", validators=[positive("1/s")])
     ratio: float = number_field(default=1.0, validators=[in_range(0.0, lower_inclusive=False)])

@@ -14,8 +14,7 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import Component, Quantity, in_range, non_negative, number_field, positive, quantity_field
-from .line_contact import _instance_of
+from ..units import Component, Quantity, in_range, instance_of, non_negative, number_field, positive, quantity_field
 from .material import Material
 
 __all__ = ["Cam", "Follower", "ValveTrain"]
@@ -54,7 +53,7 @@ class Cam(Component):
     program: object = attrs.field(validator=_motion_program)
     base_radius: Quantity = quantity_field("[length]", validators=[positive("m")])
     width: Quantity = quantity_field("[length]", validators=[positive("m")])
-    material: Material = attrs.field(validator=_instance_of(Material))
+    material: Material = attrs.field(validator=instance_of(Material))
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
 
 
@@ -80,7 +79,7 @@ class Follower(Component):
 
     name: str = "follower"
     kind: str = attrs.field(default="roller", validator=attrs.validators.in_(("roller", "flat")))
-    material: Material = attrs.field(validator=_instance_of(Material))
+    material: Material = attrs.field(validator=instance_of(Material))
     roller_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
     offset: Quantity = quantity_field("[length]", default="0 mm")
     max_pressure_angle: Quantity = quantity_field(

@@ -8,9 +8,9 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..units import Component, Quantity, above_absolute_zero, in_range, number_field, positive, quantity_field
+from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, number_field, positive,
+                     quantity_field)
 from .cam import Cam, Follower, ValveTrain
-from .line_contact import _instance_of
 from .lubricant import Lubricant
 
 __all__ = ["CamFollower"]
@@ -60,9 +60,9 @@ class CamFollower(Component):
     """
 
     name: str = "cam–follower"
-    cam: Cam = attrs.field(validator=_instance_of(Cam))
-    follower: Follower = attrs.field(validator=_instance_of(Follower))
-    valve_train: ValveTrain = attrs.field(validator=_instance_of(ValveTrain))
+    cam: Cam = attrs.field(validator=instance_of(Cam))
+    follower: Follower = attrs.field(validator=instance_of(Follower))
+    valve_train: ValveTrain = attrs.field(validator=instance_of(ValveTrain))
     speed: Quantity = quantity_field("1/[time]", validators=[positive("rad/s")])
     angular_acceleration: Quantity = quantity_field("1/[time]**2", default="0 rad/s**2")
     angles: Quantity = quantity_field("[angle]", optional=True)
@@ -70,7 +70,7 @@ class CamFollower(Component):
         "[angle]", default="1 deg", validators=[in_range(0.0, math.pi, lower_inclusive=False, unit="rad")]
     )
     max_speed: Quantity = quantity_field("1/[time]", optional=True, validators=[positive("rad/s")])
-    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(_instance_of(Lubricant)))
+    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Lubricant)))
     temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
     convention: str = attrs.field(default="consistent")
     friction_coefficient: float = number_field(optional=True, validators=[in_range(0.0, 1.0)])

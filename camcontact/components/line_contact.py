@@ -7,21 +7,13 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import Component, Quantity, above_absolute_zero, in_range, non_negative, number_field, positive, quantity_field
+from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, non_negative, number_field,
+                     positive, quantity_field)
 from .lubricant import Lubricant
 from .material import Material
 
 __all__ = ["Body", "LineContact"]
 
-
-def _instance_of(cls):
-    def _validate(instance, attribute, value):
-        if not isinstance(value, cls):
-            raise InputError(
-                f"{type(instance).__name__}.{attribute.name} = {value!r}: expected a {cls.__name__}"
-            )
-
-    return _validate
 
 
 @attrs.frozen(kw_only=True)
@@ -43,7 +35,7 @@ class Body(Component):
     """
 
     name: str = "body"
-    material: Material = attrs.field(validator=_instance_of(Material))
+    material: Material = attrs.field(validator=instance_of(Material))
     radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
     concave: bool = False
     speed: Quantity = quantity_field("[velocity]", default="0 m/s")
@@ -87,12 +79,12 @@ class LineContact(Component):
     """
 
     name: str = "line contact"
-    body1: Body = attrs.field(validator=_instance_of(Body))
-    body2: Body = attrs.field(validator=_instance_of(Body))
+    body1: Body = attrs.field(validator=instance_of(Body))
+    body2: Body = attrs.field(validator=instance_of(Body))
     load: Quantity = quantity_field("[force]", optional=True, validators=[positive("N")])
     length: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
     load_per_length: Quantity = quantity_field("[force]/[length]", optional=True, validators=[positive("N/m")])
-    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(_instance_of(Lubricant)))
+    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Lubricant)))
     temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
     friction_coefficient: float = number_field(default=0.0, validators=[in_range(0.0, 1.0)])
 

@@ -13,9 +13,8 @@ from __future__ import annotations
 import attrs
 
 from ..errors import InputError
-from ..units import (Component, Quantity, above_absolute_zero, in_range, non_negative, number_field, one_of,
-                     positive, quantity_field)
-from .line_contact import _instance_of
+from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, non_negative, number_field,
+                     one_of, positive, quantity_field)
 from .lubricant import Lubricant
 from .material import Material
 
@@ -75,12 +74,12 @@ class RacewayContact(Component):
     load: Quantity = quantity_field("[force]", validators=[positive("N")])
     ring_speed: Quantity = quantity_field("1/[time]", validators=[non_negative("1/s")])
     roller_speed: Quantity = quantity_field("1/[time]", optional=True, validators=[non_negative("1/s")])
-    raceway_material: Material = attrs.field(validator=_instance_of(Material))
-    roller_material: Material = attrs.field(validator=_instance_of(Material))
+    raceway_material: Material = attrs.field(validator=instance_of(Material))
+    roller_material: Material = attrs.field(validator=instance_of(Material))
     raceway_roughness: Quantity = quantity_field("[length]", validators=[non_negative("m")])
     roller_roughness: Quantity = quantity_field("[length]", validators=[non_negative("m")])
     roughness_wavelength: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
-    lubricant: Lubricant = attrs.field(validator=_instance_of(Lubricant))
+    lubricant: Lubricant = attrs.field(validator=instance_of(Lubricant))
     temperature: Quantity = quantity_field("[temperature]", validators=[above_absolute_zero()])
     slide_roll_ratio: float = number_field(default=0.0, validators=[in_range(0.0, 2.0, upper_inclusive=False)])
     lambda_min: float = number_field(default=0.0, validators=[in_range(0.0)])

@@ -20,8 +20,7 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import ANGLE, Component, Quantity, in_range, non_negative, positive, quantity_field
-from .line_contact import _instance_of
+from ..units import ANGLE, Component, Quantity, in_range, instance_of, non_negative, positive, quantity_field
 from .material import Material
 
 __all__ = ["SphericalRollerBearing"]
@@ -91,7 +90,7 @@ class SphericalRollerBearing(Component):
     radial_clearance: Quantity = quantity_field("[length]", default="0 mm")
     rows: int = attrs.field(default=2, validator=_count(1, 2))
     row_offset: Quantity = quantity_field(ANGLE, default="0 deg")
-    material: Material | None = attrs.field(default=None, validator=attrs.validators.optional(_instance_of(Material)))
+    material: Material | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Material)))
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
 
     def __attrs_post_init__(self) -> None:

@@ -57,7 +57,7 @@ def test_exactly_zero_entrainment_is_flagged_not_nan():
     """An angle where u_m is exactly zero cannot be hit by sampling; a motion whose u_m vanishes on a whole
     interval (f'' = -(R_o + f)/2 is impossible for a real program), so the check goes through the film step
     directly with u_m = 0 on one angle."""
-    from camcontact.scenes.cam_follower import _cycle_films
+    from camcontact.steps.film_cycle import quasi_steady_films
 
     model = cc.registry.get("film_models", "pan_hamrock")
     state = OIL.state(None)
@@ -66,7 +66,7 @@ def test_exactly_zero_entrainment_is_flagged_not_nan():
          "lubricant_state": state, "density_law": "dowson_higginson", "M": np.array([math.inf, 10.0]),
          "U": np.array([0.0, 1e-11]), "G": np.array([5000.0, 5000.0]), "W": np.array([2e-5, 2e-5]),
          "L": np.array([0.0, 10.0])}
-    films = _cycle_films(model, s, np.array([0.0, 1.0]))
+    films = quasi_steady_films(model, **s, film_speed_factor=1.0)
     assert films["h_min"][0] == 0.0 and np.isfinite(films["h_min"][1]) and films["h_min"][1] > 0
     assert "u_m = 0" in films["film_regime"][0]
 
@@ -97,7 +97,7 @@ def test_a_warm_start_that_does_not_converge_is_retried_cold():
     49° every attempt of the ladder stagnated or diverged, while a cold full-multigrid start
     converges. The film step therefore retries cold when the warm result is not converged (not only
     when it raises), and keeps the converged one."""
-    from camcontact.scenes.cam_follower import _solve_numerically
+    from camcontact.steps.film_cycle import solve_numerically
 
     class Scripted:
         """A film model whose warm start does not converge and whose cold start does."""
@@ -113,11 +113,11 @@ def test_a_warm_start_that_does_not_converge_is_retried_cold():
             return {"h_min": 1e-6 if initial is None else 2e-6, "convergence": record}
 
     model = Scripted()
-    produced, failure = _solve_numerically(model, {}, previous=object())
+    produced, failure = solve_numerically(model, {}, previous=object())
     assert failure is None and model.starts == ["warm", "cold"]
     assert produced["convergence"].converged and produced["h_min"] == 1e-6
     model = Scripted()
-    produced, _ = _solve_numerically(model, {}, previous=None)  # no neighbour: one cold start only
+    produced, _ = solve_numerically(model, {}, previous=None)  # no neighbour: one cold start only
     assert model.starts == ["cold"] and produced["convergence"].converged
 
 
@@ -126,7 +126,7 @@ def test_threaded_arcs_agree_with_one_warm_started_chain():
     within the solver tolerance (the second arc starts cold, so the iterates differ), angle by angle,
     all converged; the thread count is validated."""
     from camcontact.models.film_multigrid import Multigrid
-    from camcontact.scenes.cam_follower import MIN_CHAIN, _chain_count
+    from camcontact.steps.film_cycle import MIN_CHAIN, chain_count
 
     roller = cc.CamFollower(
         cam=cc.Cam(program=MotionProgram.thesis_ls1(), base_radius="40 mm", width="15 mm", material=STEEL),
@@ -135,12 +135,12 @@ def test_threaded_arcs_agree_with_one_warm_started_chain():
     films = {}
     for threads in (1, 2):
         model = Multigrid(levels=6, tolerance=1e-8, threads=threads)
-        assert _chain_count(model, 2 * MIN_CHAIN) == threads
+        assert chain_count(model, 2 * MIN_CHAIN) == threads
         result = cc.Analysis(roller, outputs=["h_min", "film_regime"], models={"film": model}).run()
         assert all(text == "ok" for text in result["film_regime"])
         films[threads] = np.asarray(result["h_min"], dtype=float)
     np.testing.assert_allclose(films[2], films[1], rtol=1e-5)
-    assert _chain_count(Multigrid(threads=4), MIN_CHAIN + 1) == 1  # no arc shorter than MIN_CHAIN
+    assert chain_count(Multigrid(threads=4), MIN_CHAIN + 1) == 1  # no arc shorter than MIN_CHAIN
     with pytest.raises(cc.InputError, match="threads = 0"):
         Multigrid(threads=0)
 

@@ -1,0 +1,270 @@
+"""The film over a cam cycle: EHL groups per angle, quasi-steady films (formulas, or the numerical film in
+warm-started chains on threads), or one transient march with the squeeze term.
+
+The quasi-steady film of each angle is the steady film of its load, radius and entrainment speed
+(Tsuha 2015 §6); the numerical one (film model ``"multigrid"``) is warm-started from the previous
+angle, a dwell is solved once, an angle the solver cannot do falls back to the Pan–Hamrock formula
+with the reason in ``film_regime``. The ``squeeze`` effect solves the turn as one transient
+(:func:`camcontact.ehl.line_transient.transient_cycle`). Arrays are over the scene's cam angles
+[rad]; loads per length [N/m], radii and films [m], speeds [m/s].
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import warnings
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+
+from .. import registry
+from ..ehl.groups import hamrock_line, moes_line
+from ..errors import ConvergenceError, InputError
+from ..models.film_line import LINE_INPUTS
+from ..step_graph import step
+from .film import FILMS, films_of, model_name, model_version
+from .kinematics import degrees_text
+
+__all__ = [
+    "MIN_CHAIN", "STEADY_M_LIMIT", "chain_count", "cycle_ehl_groups", "numerical_film_details",
+    "quasi_steady_films", "solve_chain", "solve_numerically", "spike_height", "steadiest_angle", "transient_films",
+]
+
+#: beyond this Moes M (entrainment speed near zero) no steady solution is attempted: the steady
+#: film tends to zero and the real film lives on squeeze (the ``squeeze`` effect solves it transiently)
+STEADY_M_LIMIT = 2000.0
+#: the fewest distinct angles per warm-started chain (each chain starts cold, ~0.1-0.4 s at level 8)
+MIN_CHAIN = 16
+FILM_OUTPUTS = (*FILMS, "film_regime", "film_solutions")
+
+
+@step("ehl_groups", provides=("alpha_effective", "U", "G", "W", "M", "L"))
+def cycle_ehl_groups(w, R, E_reduced, u_m, eta0, alpha, piezoviscosity, film_speed_factor):
+    """U, G, W, M, L at every angle for the film speed |u_m| x ``film_speed_factor`` (0.5 in the thesis
+    convention, which feeds the films the mean speed where Moes uses the sum); M = inf where the
+    contact is loaded but nothing entrains, 0 where it is not loaded."""
+    alpha = alpha if piezoviscosity else 0.0
+    u = np.abs(u_m) * film_speed_factor
+    n = u.size
+    U, G, W, M, L = (np.zeros(n) for _ in range(5))
+    for i in range(n):
+        if w[i] > 0.0 and u[i] > 0.0:
+            U[i], G[i], W[i] = hamrock_line(float(w[i]), float(R[i]), E_reduced, float(u[i]), eta0, alpha)
+            M[i], L[i] = moes_line(U[i], G[i], W[i])
+        else:
+            G[i] = alpha * E_reduced
+            M[i] = math.inf if w[i] > 0.0 else 0.0
+    return {"alpha_effective": alpha, "U": U, "G": G, "W": W, "M": M, "L": L}
+
+
+def check_squeeze(film_model) -> None:
+    """InputError unless the film model is the numerical ``multigrid`` (the squeeze effect needs it)."""
+    if getattr(film_model, "name", "") != "multigrid":
+        raise InputError("the 'squeeze' effect solves the film numerically over the turn: use the film model "
+                         "'multigrid' (models={'film': 'multigrid'}), or leave the effect off for the "
+                         f"quasi-steady {getattr(film_model, 'name', 'formula')} film")
+
+
+@step("film", provides=FILM_OUTPUTS, model=model_name, version=model_version)
+def quasi_steady_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, U, G, W, M, L, lubricant_state,
+                       density_law, contact_open, film_speed_factor):
+    """Films [m] at every angle: steady solutions, warm-started, cached (a dwell is solved once).
+
+    Numerical solves run as warm-started chains along the cycle: the distinct contact states in
+    angle order are cut into :func:`chain_count` arcs, solved side by side in threads (the compiled
+    kernels release the GIL), each arc warm-started angle by angle from a cold start. ``film_regime``
+    says per angle "ok" or why not (contact lost, u_m = 0, reversal, fallback, validity, convergence);
+    ``film_solutions`` holds the numerical solutions (None elsewhere).
+    """
+    u_film = np.abs(u_m) * film_speed_factor
+    n = u_film.size
+    films = films_of(film_model)
+    values = {q: np.zeros(n) for q in films}
+    regime = np.empty(n, dtype=object)
+    solutions: list = [None] * n
+    numerical = getattr(film_model, "name", "") == "multigrid"
+    fallback = registry.get("film_models", "pan_hamrock") if numerical else None
+    # the samples on both sides of a sign change of u_m bracket an entrainment reversal
+    sign = np.sign(np.asarray(u_m, dtype=float))
+    reversal = np.zeros(n, dtype=bool)
+    change = sign[:-1] * sign[1:] < 0.0
+    reversal[:-1] |= change
+    reversal[1:] |= change
+    # --- plan: which angles need which solve (identical inputs share one)
+    keys: list = [None] * n
+    states: dict = {}  # key -> (state, model to use, note)
+    for i in range(n):
+        if contact_open[i] or w[i] <= 0.0:
+            for q in films:
+                values[q][i] = np.nan
+            regime[i] = "contact lost (jump): no film"
+            continue
+        if u_film[i] == 0.0:
+            regime[i] = "u_m = 0: no steady film (the squeeze film needs the transient solution: effect 'squeeze')"
+            continue
+        state = {"R": float(R[i]), "w": float(w[i]), "E_reduced": E_reduced, "u_m": float(u_film[i]),
+                 "eta0": eta0, "alpha": alpha_effective, "lubricant_state": lubricant_state,
+                 "density_law": density_law}
+        key = keys[i] = tuple(state[k] for k in LINE_INPUTS)
+        if key in states:
+            continue
+        use, note = film_model, ""
+        if numerical and M[i] > STEADY_M_LIMIT:
+            use, note = fallback, (f"u_m ≈ 0 (|u_m| = {abs(u_m[i]):.3g} m/s, M = {M[i]:.4g} > "
+                                   f"{STEADY_M_LIMIT:g}): Pan–Hamrock formula; squeeze film: effect 'squeeze'")
+        states[key] = (state, use, note)
+    # --- solve: formulas directly, the numerical film in warm-started chains
+    cache: dict = {}
+    chain = [key for key, (_, use, _) in states.items() if use is film_model and numerical]
+    for key, (state, use, note) in states.items():
+        if key not in chain:
+            cache[key] = (use(state), use, note)
+    if chain:
+        arcs = [list(arc) for arc in np.array_split(np.arange(len(chain)), chain_count(film_model, len(chain)))]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # the record says it; the regime column reports it
+            if len(arcs) == 1:
+                results = [solve_chain(film_model, fallback, [states[chain[j]][0] for j in arcs[0]])]
+            else:
+                with ThreadPoolExecutor(len(arcs)) as pool:
+                    results = list(pool.map(
+                        lambda arc: solve_chain(film_model, fallback, [states[chain[j]][0] for j in arc]), arcs))
+        for arc, produced_arc in zip(arcs, results):
+            for j, entry in zip(arc, produced_arc):
+                cache[chain[j]] = entry
+    # --- fill the angles
+    groups = {"U": U, "G": G, "W": W, "M": M, "L": L}
+    for i in range(n):
+        if keys[i] is None:
+            continue
+        produced, use, note = cache[keys[i]]
+        for q in films:
+            values[q][i] = produced[q]
+        messages = [note] if note else []
+        record = produced.get("convergence")
+        if record is not None:
+            solutions[i] = produced.get("ehl_solution")
+            if not record.converged:
+                messages.append(f"not converged: {record.message}")
+        elif use is film_model:
+            messages += use.check_validity({k: v[i] for k, v in groups.items()})
+        if (M[i] > STEADY_M_LIMIT or reversal[i]) and not note:
+            messages.insert(0, f"u_m ≈ 0: entrainment reversal (u_m = {u_m[i]:.3g} m/s, M = {M[i]:.4g}); "
+                               "the steady film → 0 there; squeeze film: effect 'squeeze'")
+        regime[i] = "; ".join(messages) if messages else "ok"
+    return {**values, "film_regime": regime, "film_solutions": solutions}
+
+
+def steadiest_angle(w: np.ndarray, R: np.ndarray, u: np.ndarray) -> int:
+    """The angle whose neighbours differ least in w, R and u (the base circle of a cam): the transient
+    march starts there from the steady film, so its start is the periodic state."""
+    def change(a):
+        scale = np.max(np.abs(a)) or 1.0
+        return (np.abs(a - np.roll(a, 1)) + np.abs(np.roll(a, -1) - a)) / scale
+
+    score = change(w) + change(R) + change(u)
+    score[u == 0.0] = np.inf
+    return int(np.argmin(score))
+
+
+@step("film", provides=FILM_OUTPUTS, model=lambda film_model: f"{model_name(film_model)} (transient, squeeze)",
+      version=model_version, check=check_squeeze)
+def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lubricant_state, density_law,
+                    contact_open, film_speed_factor, piezoviscosity, cam_angle, angular_speed):
+    """Films [m] over the turn from one transient march with the squeeze term (the ``squeeze`` effect):
+    implicit BDF2 steps from angle to angle through any entrainment reversal, from the steady film at
+    the steadiest angle; needs contact and a constant cam speed at every angle."""
+    from ..ehl.line_transient import transient_cycle
+
+    theta, omega = np.asarray(cam_angle, dtype=float), float(angular_speed[0])
+    open_ = np.asarray(contact_open) | (np.asarray(w) <= 0.0)
+    if np.any(open_):
+        raise InputError(f"the squeeze (transient) film needs contact at every angle; the follower leaves the cam at "
+                         f"{degrees_text(theta[open_][:3])}: stiffen the spring or lower the speed")
+    if not np.allclose(angular_speed, omega) or theta.size < 3:
+        raise InputError("the squeeze (transient) film needs a constant cam speed and at least 3 angles over the turn")
+    u = np.asarray(u_m, dtype=float) * film_speed_factor
+    start = steadiest_angle(np.asarray(w), np.asarray(R), u)
+    order = np.roll(np.arange(theta.size), -start)
+    times = np.mod(theta[order] - theta[start], 2.0 * np.pi) / omega
+    roelands = getattr(lubricant_state.pressure_law, "name", "roelands") == "roelands"
+    result = transient_cycle(
+        times, np.asarray(w)[order], np.asarray(R)[order], u[order], E_reduced=E_reduced,
+        eta0=eta0, alpha=alpha_effective if piezoviscosity else 0.0,
+        z=lubricant_state.roelands_z if roelands and piezoviscosity else None,
+        viscosity="roelands" if roelands and piezoviscosity else "barus",
+        density=density_law, levels=film_model.levels, tolerance=max(film_model.tolerance, 1e-6),
+        strict=film_model.strict)
+    films = {"h_c": np.empty(theta.size), "h_min": np.empty(theta.size)}
+    films["h_c"][order], films["h_min"][order] = result.h_c, result.h_min
+    regime = np.empty(theta.size, dtype=object)
+    for k, i in enumerate(order):
+        note = "transient (squeeze)" + (" at u_m = 0" if u[i] == 0.0 else "")
+        regime[i] = note if result.converged[k] else f"{note}: not converged: {result.records[k].message}"
+    return {**films, "film_regime": regime, "film_solutions": [None] * theta.size}
+
+
+def spike_height(solution) -> float:
+    """P_s of a numerical solution's pressure spike; NaN when it has no distinct spike (a single pressure
+    maximum), 0 where no numerical solution was made (contact lost, u_m = 0, formula fallback)."""
+    if solution is None:
+        return 0.0
+    spike = solution.spike
+    return math.nan if spike is None else spike[0]
+
+
+@step("ehl_details", provides=("H0", "H_min", "H_c", "spike_pressure"))
+def numerical_film_details(film_solutions):
+    """H0, H_min, H_c and the spike height P_s [-] of the numerical solution at every angle (0 where
+    there is none); InputError when the film model is not numerical."""
+    if all(sol is None for sol in film_solutions):
+        raise InputError("H0, H_min, H_c and spike_pressure come from the numerical solution: use the film model "
+                         "'multigrid'")
+    pick = (lambda attr: np.array([getattr(sol, attr) if sol is not None else 0.0 for sol in film_solutions]))
+    return {"H0": pick("H0"), "H_min": pick("H_min"), "H_c": pick("H_c"),
+            "spike_pressure": np.array([spike_height(sol) for sol in film_solutions])}
+
+
+def chain_count(model, solves: int) -> int:
+    """How many warm-started chains (threads) the numerical film of a cycle uses: the model's
+    ``threads`` (None: the CPUs, at most 4), but no chain shorter than :data:`MIN_CHAIN`."""
+    threads = getattr(model, "threads", 1)
+    threads = min(os.cpu_count() or 1, 4) if threads is None else int(threads)
+    return max(1, min(threads, solves // MIN_CHAIN))
+
+
+def solve_chain(model, fallback, states) -> list:
+    """Solve the states in order, each warm-started from the last numerical solution before it;
+    an angle the solver cannot do falls back to the Pan–Hamrock formula with the reason."""
+    previous = None
+    out = []
+    for state in states:
+        produced, failure = solve_numerically(model, state, previous)
+        if produced is None:
+            out.append((fallback(state), fallback, f"multigrid failed ({failure}): Pan–Hamrock formula"))
+            continue
+        previous = produced["ehl_solution"]
+        out.append((produced, model, ""))
+    return out
+
+
+def solve_numerically(model, state, previous):
+    """Multigrid film warm-started from ``previous``; if that diverges or does not converge, once
+    more from a cold (full-multigrid) start, keeping a converged result if either gives one.
+    The caller silences the solver's ConvergenceWarning (the regime column reports it).
+
+    Returns (produced, None) or (None, failure message).
+    """
+    failure = None
+    best = None
+    for initial in ((previous, None) if previous is not None else (None,)):
+        try:
+            produced = model.evaluate(**state, initial=initial)
+        except ConvergenceError as exc:
+            failure = str(exc).split(";")[0]
+            continue
+        if produced["convergence"].converged:
+            return produced, None
+        best = best or produced  # not converged: the record says so in the regime column
+    return (best, None) if best is not None else (None, failure)

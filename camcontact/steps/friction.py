@@ -1,0 +1,169 @@
+"""Friction and wear steps: the cam follower's friction and wear models per angle, Benedict–Kelley
+friction of raceway contacts with their flash temperatures.
+
+Cam follower: any model of the ``friction_models`` / ``wear_models`` families (Coulomb, Archard,
+Ferrarese & Uehara), resolved when its step is planned (:class:`SlotModel`). Raceways: the
+Benedict–Kelley correlation (Delabenetta 2021 Eq. 49, :class:`camcontact.models.friction.Kelley`) and
+Blok's flash temperature (Eq. 48, :func:`camcontact.contact.contact_temperature.flash_temperature`).
+Forces [N], speeds [m/s], powers [W], wear rates [m^3/s], temperatures [K].
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import attrs
+import numpy as np
+
+from .. import registry
+from ..contact.contact_temperature import flash_temperature
+from ..errors import InputError
+from ..models.friction import Kelley
+from ..step_graph import step
+from .contact import RACES
+
+__all__ = ["ALIASES", "SlotModel", "cam_friction", "cam_wear", "raceway_kelley_friction", "roller_friction"]
+
+#: state names the cam scene gives under other names for the friction and wear models
+ALIASES = {"sliding_speed": "u_s"}
+
+
+@attrs.frozen
+class SlotModel:
+    """A model slot resolved when its step is planned (an unasked friction model needs no parameters).
+
+    The default models ``coulomb`` and ``archard`` take their coefficient from the scene
+    (``CamFollower.friction_coefficient`` / ``wear_coefficient``); without it their step requires the
+    pseudo-input ``coefficient_input``, which the plan reports as missing with the scene's hint.
+    """
+
+    family: str
+    spec: Any
+    slot: str
+    coefficient: float | None = None
+    coefficient_input: str = ""
+
+    #: names of the models whose only parameter ``coefficient`` the scene may supply
+    SCENE_COEFFICIENT = ("coulomb", "archard")
+
+    @property
+    def kind(self) -> Any:
+        return registry.get_class(self.family, self.spec) if isinstance(self.spec, str) else self.spec
+
+    @property
+    def name(self) -> str:
+        return getattr(self.kind, "name", str(self.spec))
+
+    @property
+    def version(self) -> str:
+        return getattr(self.kind, "version", "")
+
+    @property
+    def parameters(self) -> dict[str, Any]:
+        if isinstance(self.spec, str) and self.spec in self.SCENE_COEFFICIENT and self.coefficient is not None:
+            return {"coefficient": self.coefficient}
+        return {}
+
+    @property
+    def requires(self) -> tuple[str, ...]:
+        """The state names the model reads, under the scene's names (:data:`ALIASES`), with the
+        pseudo-input of a missing scene coefficient."""
+        names = tuple(ALIASES.get(name, name) for name in getattr(self.kind, "requires", ()))
+        if isinstance(self.spec, str) and self.spec in self.SCENE_COEFFICIENT and self.coefficient is None:
+            names += (self.coefficient_input,)
+        return names
+
+    def resolve(self):
+        """The model instance (InputError naming the slot when the model needs parameters)."""
+        try:
+            return registry.get(self.family, self.spec, **self.parameters)
+        except TypeError as exc:
+            raise InputError(
+                f"{self.slot} model {self.name!r} needs parameters ({exc}); pass an instance, e.g. "
+                f"models={{'{self.slot}': camcontact.registry.get('{self.family}', '{self.name}', ...)}}"
+            ) from None
+
+
+def _label(model) -> str:
+    return model.name
+
+
+def _version(model) -> str:
+    return model.version
+
+
+def _state(normal_force, u_s, angular_speed, cam_angle, inputs) -> dict:
+    state = {"normal_force": normal_force, "u_s": u_s, "angular_speed": angular_speed, "cam_angle": cam_angle,
+             **inputs}
+    state.update({alias: state[name] for alias, name in ALIASES.items() if name in state})
+    return state
+
+
+def _check_friction(friction_model) -> None:
+    friction_model.resolve()
+
+
+def _check_wear(wear_model) -> None:
+    wear_model.resolve()
+
+
+@step("friction", provides=("friction_force", "friction_coefficient", "friction_power"),
+      model=lambda friction_model: _label(friction_model), version=lambda friction_model: _version(friction_model),
+      check=_check_friction)
+def cam_friction(friction_model, normal_force, u_s, angular_speed, cam_angle, **inputs):
+    """Friction force [N], coefficient [-] and power [W] at every cam angle by the slot's friction model
+    (``inputs``: the further state names it reads); power = force |u_s| unless the model gives it."""
+    produced = friction_model.resolve()(_state(normal_force, u_s, angular_speed, cam_angle, inputs))
+    force = np.asarray(produced["friction_force"], dtype=float) * np.ones(cam_angle.size)
+    if "friction_power" in produced:
+        power = np.asarray(produced["friction_power"], dtype=float) * np.ones_like(force)
+    else:
+        power = force * np.abs(u_s)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mu = np.where(normal_force > 0.0, force / normal_force, 0.0)
+    return {"friction_force": force, "friction_coefficient": mu, "friction_power": power}
+
+
+@step("wear", provides=("wear_rate",), model=lambda wear_model: _label(wear_model),
+      version=lambda wear_model: _version(wear_model), check=_check_wear)
+def cam_wear(wear_model, normal_force, u_s, angular_speed, cam_angle, **inputs):
+    """Wear rate [m^3/s] at every cam angle by the slot's wear model (``inputs``: the state it reads)."""
+    produced = wear_model.resolve()(_state(normal_force, u_s, angular_speed, cam_angle, inputs))
+    return {"wear_rate": np.asarray(produced["wear_rate"], dtype=float) * np.ones(cam_angle.size)}
+
+
+@step("friction", provides=("friction_coefficient", "friction_validity"), model="kelley")
+def raceway_kelley_friction(F, length, eta0, u_raceway, u_roller):
+    """Benedict–Kelley friction coefficient of a raceway contact (Delabenetta 2021 Eq. 49); pure rolling
+    lies outside the correlation: NaN with the reason in ``friction_validity``."""
+    if u_raceway == u_roller:
+        return {"friction_coefficient": math.nan,
+                "friction_validity": "pure rolling: the Kelley correlation needs sliding (no frictional heating)"}
+    mu = Kelley()({"normal_force": F, "contact_length": length, "eta0": eta0,
+                   "u1": u_raceway, "u2": u_roller})["friction_coefficient"]
+    return {"friction_coefficient": float(mu), "friction_validity": "ok"}
+
+
+@step("friction", provides=("friction_coefficient_inner", "friction_coefficient_outer", "flash_temperature_inner",
+                            "flash_temperature_outer", "friction_power"), model="kelley")
+def roller_friction(Q, u_m, slide_roll_ratio, eta0, E_reduced, effusivity, contact_radii, roller_length):
+    """Benedict–Kelley friction at both raceway contacts of every loaded roller with the slide/roll ratio,
+    the flash temperature [K] of each contact and the bearing's sliding friction power sum(mu Q |u1 - u2|)
+    [W]; NaN for unloaded rollers (Delabenetta 2021 Eqs. 48, 49)."""
+    u1, u2 = u_m * (1 + 0.5 * slide_roll_ratio), u_m * (1 - 0.5 * slide_roll_ratio)
+    loaded = Q > 0.0
+    out = {}
+    power = 0.0
+    for race in RACES:
+        mu, flash = np.full(Q.size, np.nan), np.full(Q.size, np.nan)
+        if loaded.any():
+            mu[loaded] = Kelley()({"normal_force": Q[loaded], "contact_length": roller_length, "eta0": eta0,
+                                   "u1": u1, "u2": u2})["friction_coefficient"]
+            for j in np.flatnonzero(loaded):
+                flash[j] = flash_temperature(Q[j] / roller_length, E_reduced, contact_radii[race], mu[j], u1, u2,
+                                             effusivity, effusivity)
+            power += float(np.sum(mu[loaded] * Q[loaded])) * abs(u1 - u2)
+        out[f"friction_coefficient_{race}"], out[f"flash_temperature_{race}"] = mu, flash
+    out["friction_power"] = power
+    return out

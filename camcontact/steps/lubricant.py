@@ -1,0 +1,61 @@
+"""The lubricant step: the lubricant's state at the scene temperature, shared by every scene with a film.
+
+:meth:`camcontact.components.Lubricant.state` evaluates the viscosity-temperature law (Walther,
+ASTM D341, Vogel), the pressure-viscosity data (alpha, Roelands z), the thermal data and the
+density law; the ``compressibility`` effect decides whether the numerical film sees the
+lubricant's density law or an incompressible one.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..errors import InputError
+from ..step_graph import step
+
+__all__ = ["LUBRICANT_OUTPUTS", "lubricant_inputs", "lubricant_label", "lubricant_state"]
+
+LUBRICANT_OUTPUTS = ("lubricant_state", "eta0", "alpha", "roelands_z", "kinematic_viscosity",
+                     "thermoviscous_coefficient", "lubricant_conductivity", "density_law")
+
+
+def lubricant_inputs(lubricant: Any, temperature: float | None) -> dict[str, Any]:
+    """The graph inputs of a scene's lubricant: ``lubricant`` (when given) and ``temperature`` [K] (when
+    given, or None for a lubricant whose viscosity does not depend on it). Without them the lubricant
+    step's missing input is reported up front, with the scene's hint."""
+    if lubricant is None:  # the lubricant is what is missing (the temperature is not asked for then)
+        return {"temperature": temperature}
+    inputs: dict[str, Any] = {"lubricant": lubricant}
+    if temperature is not None or lubricant.isothermal:
+        inputs["temperature"] = temperature
+    return inputs
+
+
+def lubricant_label(lubricant) -> str:
+    """``"<viscosity-temperature law>/<viscosity-pressure law>"`` of a lubricant (the step record's model)."""
+    return "" if lubricant is None else f"{lubricant.viscosity_temperature_law}/{lubricant.viscosity_pressure_law}"
+
+
+def check_pressure_viscosity(lubricant, piezoviscosity) -> None:
+    """InputError when the ``piezoviscosity`` effect is on and the lubricant has no pressure-viscosity data."""
+    if piezoviscosity and lubricant is not None and lubricant.alpha is None and lubricant.roelands_z is None \
+            and lubricant.alpha_correlation is None:
+        raise InputError(
+            f"Lubricant {lubricant.name!r} has no pressure-viscosity data (alpha or roelands_z), which "
+            "the 'piezoviscosity' effect needs; give it or switch the effect off"
+        )
+
+
+@step("lubricant", provides=LUBRICANT_OUTPUTS, model=lubricant_label, check=check_pressure_viscosity)
+def lubricant_state(lubricant, temperature, compressibility):
+    """The lubricant at ``temperature`` [K] (None: an isothermal lubricant): its state object, eta0
+    [Pa s], alpha [1/Pa], Roelands z, kinematic viscosity [m^2/s], beta [1/K], conductivity [W/(m K)]
+    and the density law the numerical film uses (``"incompressible"`` unless ``compressibility``)."""
+    state = lubricant.state(temperature)
+    return {
+        "lubricant_state": state, "eta0": state.eta0, "alpha": state.alpha,
+        "roelands_z": state.roelands_z, "kinematic_viscosity": state.kinematic_viscosity,
+        "thermoviscous_coefficient": state.thermoviscous_coefficient,
+        "lubricant_conductivity": state.thermal_conductivity,
+        "density_law": lubricant.density_law if compressibility else "incompressible",
+    }

@@ -1,0 +1,60 @@
+"""Cycle summaries: peaks, minima and means over a cam turn (scalars of the per-angle outputs).
+
+Means are over equally spaced cam angles of a full turn (a time mean at constant cam speed).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import InputError
+from ..step_graph import step
+
+__all__ = ["cycle_mean", "friction_power_mean", "h_min_cycle", "jump_margin", "peak_contact_force",
+           "peak_pressure", "wear_rate_mean"]
+
+
+def cycle_mean(cam_angle: np.ndarray, values: np.ndarray) -> float:
+    """Mean of ``values`` over a turn sampled at equally spaced ``cam_angle`` [rad] (InputError otherwise)."""
+    if cam_angle.size > 1 and not np.allclose(np.diff(cam_angle), cam_angle[1] - cam_angle[0]):
+        raise InputError("cycle means need equally spaced cam angles over a full turn (use angle_step)")
+    return float(np.mean(values))
+
+
+@step("jump_margin", provides=("jump_margin",))
+def jump_margin(contact_force):
+    """The smallest contact force over the turn [N] (negative: the follower jumps)."""
+    return {"jump_margin": float(np.min(contact_force))}
+
+
+@step("contact_force_max", provides=("contact_force_max",))
+def peak_contact_force(contact_force):
+    """The largest contact force over the turn [N]."""
+    return {"contact_force_max": float(np.max(contact_force))}
+
+
+@step("p_h_max", provides=("p_h_max",))
+def peak_pressure(p_h):
+    """The largest Hertz pressure over the turn [Pa]."""
+    return {"p_h_max": float(np.max(p_h))}
+
+
+@step("h_min_cycle", provides=("h_min_cycle",))
+def h_min_cycle(h_min, film_regime):
+    """The thinnest film over the turn [m] (0 when no angle has one)."""
+    return {"h_min_cycle": float(np.nanmin(h_min)) if np.any(np.isfinite(h_min)) else 0.0}
+
+
+@step("friction_power_mean", provides=("friction_power_mean",))
+def friction_power_mean(friction_power, cam_angle):
+    """The friction power averaged over the turn [W]."""
+    return {"friction_power_mean": cycle_mean(cam_angle, friction_power)}
+
+
+@step("wear_rate_mean", provides=("wear_rate_mean", "wear_volume_per_cycle"))
+def wear_rate_mean(wear_rate, speed, cam_angle):
+    """The wear rate averaged over the turn [m^3/s] and the volume worn per turn [m^3] at cam speed [rad/s]."""
+    return {"wear_rate_mean": cycle_mean(cam_angle, wear_rate),
+            "wear_volume_per_cycle": cycle_mean(cam_angle, wear_rate) * 2.0 * math.pi / speed}
