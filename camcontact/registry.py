@@ -2,9 +2,11 @@
 
 * Families are listed in :data:`camcontact.models.base.FAMILIES`; the entry-point group of
   family ``f`` is ``"camcontact." + f`` (e.g. ``camcontact.film_models``).
-* Built-in models register in code with the :func:`builtin` decorator; the registry
-  imports the modules that hold a family's built-ins only when that family is first
-  looked up, so ``import camcontact`` loads no model and compiles nothing.
+* Built-in models are marked in code with the :func:`camcontact.models.base.builtin`
+  decorator; the registry imports the modules that hold a family's built-ins
+  (:data:`BUILTIN_MODULES`) only when that family is first looked up and registers the
+  marked classes they define, so ``import camcontact`` loads no model and compiles nothing
+  (and the models do not import the registry).
 * Third-party plugins are discovered lazily, per family, on first lookup, through
   :func:`importlib.metadata.entry_points`. A plugin that fails to import or does not
   fit its family gives a :class:`~camcontact.errors.PluginLoadWarning` and is listed as
@@ -27,12 +29,11 @@ from typing import Any
 import attrs
 
 from .errors import PluginLoadWarning, PluginNameClashWarning, UnknownModelError
-from .models.base import FAMILIES, CallableModel, Model
+from .models.base import FAMILIES, CallableModel, Model, builtin_classes, check_family
 
 __all__ = [
     "PluginInfo",
     "available",
-    "builtin",
     "entries",
     "families",
     "get",
@@ -84,30 +85,21 @@ def families() -> tuple[str, ...]:
     return tuple(FAMILIES)
 
 
-def _check_family(family: str) -> None:
-    if family not in FAMILIES:
-        raise UnknownModelError(
-            f"unknown model family {family!r}; families are: {', '.join(FAMILIES)}"
-        )
-
-
-def builtin(cls: type[Model]) -> type[Model]:
-    """Class decorator registering a built-in model under ``cls.name`` in ``cls.family``."""
-    _check_family(cls.family)
-    if not cls.name:
-        raise TypeError(f"{cls.__qualname__} has no 'name'")
+def _register_builtin(cls: type[Model]) -> None:
+    """Register a built-in model under ``cls.name`` in ``cls.family``; TypeError for two of one name."""
     existing = _builtins[cls.family].get(cls.name)
     if existing is not None and existing is not cls:
         raise TypeError(f"two built-in {cls.family} models are named {cls.name!r}")
     _builtins[cls.family][cls.name] = cls
-    return cls
 
 
 def _import_builtins(family: str) -> None:
+    """Import the built-in modules of ``family`` and register the classes they mark (once)."""
     if family in _builtins_imported:
         return
-    for module in BUILTIN_MODULES.get(family, ()):
-        importlib.import_module(module)
+    for name in BUILTIN_MODULES.get(family, ()):
+        for cls in builtin_classes(importlib.import_module(name)):
+            _register_builtin(cls)
     _builtins_imported.add(family)
 
 
@@ -192,7 +184,7 @@ def _discover(family: str) -> None:
 
 def _table(family: str) -> dict[str, type[Model] | Model]:
     with _lock:
-        _check_family(family)
+        check_family(family)
         _discover(family)
         return {**_plugins[family], **_builtins[family]}
 
@@ -236,7 +228,7 @@ def get(
     **parameters
         Keyword parameters of the model class (e.g. ``p0`` of ``roelands``).
     """
-    _check_family(family)
+    check_family(family)
     if isinstance(model, str):
         model = get_class(family, model)
     if isinstance(model, type):

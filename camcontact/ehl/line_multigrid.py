@@ -52,11 +52,12 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from . import _fas_kernels, _kernels
 from .attempts import run_ladder
+from .cycle_monitor import CycleMonitor, MonitorRules
 from .deformation import DIRECT_BELOW, Deformation
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
 from .line_solution import ConvergenceRecord, LineEHLSolution
 
-__all__ = ["MultigridSettings", "solve_multigrid"]
+__all__ = ["MONITOR_RULES", "LineHierarchy", "MultigridSettings", "solve_multigrid"]
 
 
 @attrs.frozen
@@ -104,10 +105,10 @@ class _Level:
 _DIRECT_UP_TO = 64  #: levels with at most this many nodes evaluate the deformation directly
 
 
-class _Solver:
+class LineHierarchy:
     """The level hierarchy of one solve: per-level buffers for the compiled cycles
     (:func:`camcontact.ehl._fas_kernels.fas_cycle`) and the finest-grid operator pieces the
-    outer iteration checks convergence with."""
+    outer iteration checks convergence with (the transient solver extends it with its time terms)."""
 
     def __init__(self, problem: LineEHLProblem, levels: int, settings: MultigridSettings, compiled: bool):
         self.problem = problem
@@ -279,7 +280,7 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
         raise InputError(f"solve_multigrid: levels = {levels!r}; allowed 1..16")
     settings = settings or MultigridSettings()
     start = time.perf_counter()
-    solver = _Solver(problem, int(levels), settings, compiled)
+    solver = LineHierarchy(problem, int(levels), settings, compiled)
     finest = solver.levels[-1]
     if initial is not None:
         P = np.maximum(np.interp(finest.X, initial.X, initial.P), 0.0)
@@ -296,7 +297,7 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
             for _ in range(settings.fmg_cycles):
                 P, H0 = solver.cycle(k, P, H0, zero, 0.0)
     zero = np.zeros(finest.n)
-    watch = CycleMonitor(solver, tolerance, load_floor=1e-9)
+    watch = CycleMonitor(MONITOR_RULES, tolerance, solver.freeze_dry)
     for _ in range(settings.max_cycles):
         P, H0 = solver.cycle(len(solver.levels) - 1, P, H0, zero, 0.0)
         H = solver.film(finest, P, H0)
@@ -308,15 +309,11 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
             )
         r = solver.residual(finest, P, H)
         r = np.where(P > 0.0, r, np.maximum(r, 0.0))
-        if watch.after_cycle(P, H, H0, float(np.mean(np.abs(r[1:-1])) * finest.h), solver.load(finest, P),
-                             solver.work):
+        if watch.after_cycle(P, (float(H.min()), H0), float(np.mean(np.abs(r[1:-1])) * finest.h),
+                             solver.load(finest, P), solver.work):
             break
     else:
-        if tolerance is None:
-            watch.converged = True
-            watch.message = f"fixed number of cycles ({settings.max_cycles})"
-        else:
-            watch.note(f"no convergence to {tolerance:g} in {settings.max_cycles} cycles")
+        watch.out_of_cycles(settings.max_cycles)
     converged, message = watch.converged, watch.message
     residuals, loads, works = watch.residuals, watch.loads, watch.works
     if solver.dry and converged:
@@ -338,75 +335,12 @@ _MAX_START_LEVEL = 6  # the dense start solver stays below ~1 s
 #: residual of 6e-5 for all 40 cycles)
 STAGNATION = (10, 5)
 
-
-def _stagnated(residuals: list[float], rule: tuple[int, int] = STAGNATION) -> bool:
-    """True after ``rule[0]`` cycles when the last ``rule[1]`` did not halve the best residual before them."""
-    cycles, window = rule
-    return len(residuals) >= cycles and min(residuals[-window:]) > 0.5 * min(residuals[:-window])
-
-
-def _alternating(changes: list[float]) -> bool:
-    """True when the last three cycle-to-cycle changes alternate in sign with similar size."""
-    if len(changes) < 3:
-        return False
-    a, b, c = changes[-3:]
-    same_size = max(abs(a), abs(b), abs(c)) <= 2.0 * min(abs(a), abs(b), abs(c)) + 1e-15
-    return a * b < 0 and b * c < 0 and same_size
-
-
-class CycleMonitor:
-    """The per-cycle bookkeeping and stop rules of a line FAS solve (steady and transient).
-
-    :meth:`after_cycle` records the residual, the load error and the work of a cycle and decides:
-    converged (the changes of H_min and H0 below ``tolerance`` and the load error below
-    10 max(``tolerance``, ``load_floor``)), stagnated (:func:`_stagnated`, after the last freeze),
-    or — when the cavitation boundary hops between nodes while H_min alternates — freeze the dry
-    set of the solver and go on. ``tolerance`` None: no test (a fixed number of cycles).
-    """
-
-    def __init__(self, solver, tolerance: float | None, load_floor: float = 0.0):
-        self.solver, self.tolerance, self.load_floor = solver, tolerance, load_floor
-        self.residuals: list[float] = []
-        self.loads: list[float] = []
-        self.works: list[float] = []
-        self.changes: list[float] = []
-        self.boundaries: list[int] = []  # last pressurised node after each cycle
-        self.frozen_at = 0  # the residual measure changes when the dry set is frozen
-        self.previous = None
-        self.converged = False
-        self.message = ""
-
-    def after_cycle(self, P: np.ndarray, H: np.ndarray, H0: float, residual: float, load: float, work: float) -> bool:
-        """Record one cycle; True when the solve stops here (see :attr:`converged` and :attr:`message`)."""
-        self.residuals.append(residual)
-        self.loads.append(load)
-        self.works.append(work)
-        current = (float(H.min()), H0)
-        wet = np.flatnonzero(P > 0.0)
-        self.boundaries.append(int(wet[-1]) if wet.size else -1)
-        previous, self.previous = self.previous, current
-        tolerance = self.tolerance
-        if tolerance is None or previous is None:
-            return False
-        change = max(abs(current[0] - previous[0]), abs(current[1] - previous[1]))
-        self.changes.append(current[0] - previous[0])
-        if change < tolerance and abs(load) < max(tolerance, self.load_floor) * 10:
-            self.converged = True
-            return True
-        if _stagnated(self.residuals[self.frozen_at:]):
-            self.note(f"stagnated: residual not halved in the last {STAGNATION[1]} cycles")
-            return True
-        if not self.solver.dry and _alternating(self.changes) and len(set(self.boundaries[-3:])) > 1:
-            # the cavitation boundary hops between two nodes from cycle to cycle: freeze the dry
-            # set of the finest grid (and its restrictions) and let the cycles converge
-            self.solver.freeze_dry(P)
-            self.frozen_at = len(self.residuals)
-            self.message = f"cavitation set frozen after cycle {len(self.residuals)} (boundary oscillation)"
-        return False
-
-    def note(self, text: str) -> None:
-        """Append ``text`` to the message."""
-        self.message = (self.message + "; " if self.message else "") + text
+#: the stop rules of the steady line cycles (:class:`~camcontact.ehl.cycle_monitor.CycleMonitor`):
+#: converged when the changes of (H_min, H0) fall below the tolerance and the load error below
+#: 10 max(tolerance, 1e-9); :data:`STAGNATION`; the dry set frozen when H_min alternates while the
+#: last pressurised node moves, only when a tolerance is given
+MONITOR_RULES = MonitorRules(stagnation=STAGNATION, load_factor=10.0, load_floor=1e-9, boundary="last_pressurised",
+                             freeze_needs_tolerance=True)
 
 
 def _start(problem: LineEHLProblem, level: int, finest: int) -> tuple[int, LineEHLSolution]:

@@ -18,6 +18,7 @@ import time
 import numpy as np
 
 from ..errors import ConvergenceError, ConvergenceWarning, InputError
+from .film_formulas import moes_line_film
 from .line_operator import LineGrid
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
 from .line_solution import ConvergenceRecord, LineEHLSolution
@@ -85,8 +86,6 @@ def _initial_guess(grid: LineGrid):
     P = np.where(np.abs(X) < 1.0, np.sqrt(np.clip(1.0 - X * X, 0.0, None)), 0.0)
     P *= 0.5 * math.pi / (grid.h * P.sum())
     # choose H0 so that the film at the centre is the Moes estimate (in Hertz units)
-    from ..models.film_line import moes_line_film
-
     target = moes_line_film(grid.problem.M, grid.problem.L) * math.pi / (8.0 * grid.problem.M)
     H_zero = grid.film(P, 0.0)
     H0 = target - float(np.interp(0.0, X, H_zero))

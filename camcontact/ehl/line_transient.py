@@ -69,7 +69,9 @@ import numpy as np
 
 from ..errors import ConvergenceError, ConvergenceWarning, InputError
 from .attempts import run_ladder
-from .line_multigrid import ROBUST, CycleMonitor, MultigridSettings, _Solver, solve_multigrid
+from .cycle_monitor import CycleMonitor
+from .line_multigrid import MONITOR_RULES as STEADY_RULES
+from .line_multigrid import ROBUST, MultigridSettings, LineHierarchy, solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
 
@@ -177,7 +179,7 @@ class TransientLineResult:
 
 
 # ----------------------------------------------------------------------------- the hierarchy
-class _TransientHierarchy(_Solver):
+class _TransientHierarchy(LineHierarchy):
     """The steady solver's level hierarchy, buffers and compiled cycles, with the operator's speed
     ratio s and squeeze coefficient c_t and the film's curvature set per step."""
 
@@ -214,6 +216,11 @@ def coarsest_level(domain) -> int:
     while width / (14 * 2 ** (level - 1)) > COARSEST_SPACING:
         level += 1
     return level
+
+
+#: the stop rules of a step's cycles: the steady solver's without its load floor (converged when the
+#: changes of (H_min, H0) fall below the tolerance and the load error below 10 x the tolerance)
+MONITOR_RULES = attrs.evolve(STEADY_RULES, load_floor=0.0)
 
 
 @attrs.frozen
@@ -426,7 +433,7 @@ class TransientLineSolver:
         finest = hierarchy.levels[-1]
         k = len(hierarchy.levels) - 1
         tol = self.tolerance
-        watch = CycleMonitor(hierarchy, tol)
+        watch = CycleMonitor(MONITOR_RULES, tol, hierarchy.freeze_dry)
         work0 = hierarchy.work
         for _ in range(settings.max_cycles):
             P, H0 = hierarchy.cycle(k, P, H0, f, f_load)
@@ -436,11 +443,11 @@ class TransientLineSolver:
             r = hierarchy.residual(finest, P, H) - f
             r[0] = r[-1] = 0.0
             r = np.where(P > 0.0, r, np.maximum(r, 0.0))
-            if watch.after_cycle(P, H, H0, float(np.mean(np.abs(r[1:-1])) * finest.h),
+            if watch.after_cycle(P, (float(H.min()), H0), float(np.mean(np.abs(r[1:-1])) * finest.h),
                                  hierarchy.load(finest, P) - f_load, hierarchy.work - work0):
                 break
         else:
-            watch.note(f"no convergence to {tol:g} in {settings.max_cycles} cycles")
+            watch.out_of_cycles(settings.max_cycles)
         record = ConvergenceRecord(
             method=f"transient FAS multigrid ({self.scheme}), {settings.cycle}-cycles",
             levels=len(hierarchy.levels), nodes=finest.n, residuals=tuple(watch.residuals),

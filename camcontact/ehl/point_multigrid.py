@@ -50,7 +50,8 @@ import scipy.fft
 from ..errors import ConvergenceError, InputError
 from . import _point_kernels
 from .attempts import run_ladder
-from .line_multigrid import _alternating, _stagnated
+from .cycle_monitor import CycleMonitor, MonitorRules
+from .film_formulas import nijenbanning_film
 from .line_solution import ConvergenceRecord
 from .point_problem import PointEHLProblem, point_grid_points
 from .point_solution import PointEHLSolution
@@ -285,8 +286,6 @@ def solve_point_multigrid(
 
 def _start_H0(problem: PointEHLProblem, solver: _Solver, k: int, P: np.ndarray) -> float:
     """H0 that puts the film at the centre of the dry Hertz pressure at the NVM central film."""
-    from ..models.film_point import nijenbanning_film
-
     level = solver.levels[k]
     estimate = nijenbanning_film(problem.M, problem.L, problem.D) / problem.moes_factor
     centre = (level.n // 2, int(np.argmin(np.abs(level.X))))
@@ -298,12 +297,31 @@ def _start_H0(problem: PointEHLProblem, solver: _Solver, k: int, P: np.ndarray) 
 #: (the point-wise fallback converges at about 0.9 per cycle, hence the long window)
 STAGNATION = (20, 10)
 
+#: the stop rules of the cycles (:class:`~camcontact.ehl.cycle_monitor.CycleMonitor`): converged when
+#: the changes of (H_min, H_c, H0) fall below the tolerance times max(|H_c|, 0.01) and the load error
+#: below the tolerance; :data:`STAGNATION`; the dry set frozen when H_min alternates while the number
+#: of wet nodes changes, also with tolerance None
+MONITOR_RULES = MonitorRules(stagnation=STAGNATION, load_factor=1.0, load_floor=0.0, relative_to=1, scale_floor=0.01,
+                             boundary="wet_count", freeze_needs_tolerance=False)
+
 #: a pressure this many times p_h means the iteration has blown up (hard cases peak at about 10)
 BLOW_UP = 1e4
 
 
 def _finite(P: np.ndarray, H0: float) -> bool:
     return bool(np.all(np.isfinite(P)) and math.isfinite(H0) and P.max() <= BLOW_UP)
+
+
+def _divergence(P: np.ndarray, watched: tuple, residuals: list[float], loads: list[float]) -> str:
+    """Why the cycle just recorded has diverged (non-finite film or residual, blow-up, residual grown
+    1e3-fold from its best), or "" when it has not."""
+    if not (np.all(np.isfinite(watched)) and math.isfinite(residuals[-1]) and math.isfinite(loads[-1])):
+        return "diverged: non-finite residual or film"
+    if P.max() > BLOW_UP:
+        return f"diverged: maximum pressure {P.max():.3g} p_h"
+    if len(residuals) > 3 and residuals[-1] > 1e3 * min(residuals):
+        return f"diverged: residual grew from {min(residuals):.3g} to {residuals[-1]:.3g}"
+    return ""
 
 
 def _solve_once(problem: PointEHLProblem, levels: int, tolerance: float | None,
@@ -316,14 +334,12 @@ def _solve_once(problem: PointEHLProblem, levels: int, tolerance: float | None,
     P = problem.hertz_pressure(level.X, level.Y)
     P[0, :] = P[-1, :] = P[:, 0] = P[:, -1] = 0.0
     H0 = _start_H0(problem, solver, first, P)
-    residuals: list[float] = []
-    loads: list[float] = []
-    works: list[float] = []
+    watch = CycleMonitor(MONITOR_RULES, tolerance, solver.freeze_dry)
 
     def fail(text: str) -> ConvergenceError:
         return ConvergenceError(
             f"point EHL multigrid (M = {problem.M:.4g}, L = {problem.L:.4g}, D = {problem.D:.3g}): {text}",
-            _record(solver, residuals, loads, works, start, False, text, tolerance))
+            _record(solver, watch, start, False, text, tolerance))
 
     # full multigrid: converge the start level, then up one level at a time
     zero = np.zeros_like(P)
@@ -348,61 +364,26 @@ def _solve_once(problem: PointEHLProblem, levels: int, tolerance: float | None,
             raise fail(f"non-finite or blown-up state after the FMG step to level {k + 1}")
     finest = solver.levels[top]
     zero = np.zeros_like(P)
-    converged = False
-    message = ""
-    previous = None
-    changes: list[float] = []  # of H_min from cycle to cycle
-    wet_counts: list[int] = []
-    frozen_at = 0
     for _ in range(settings.max_cycles):
         H0 = solver.cycle(top, P, H0, zero, 0.0, settings.cycle)
         if not _finite(P, H0):
             raise fail("diverged: non-finite state")
         H = solver.film(top, P, H0)
         r = solver.complementarity(top, P, H0, zero)
-        residuals.append(float(np.mean(np.abs(r[1:-1, 1:-1])) * finest.hx))
-        loads.append(solver.load(top, P))
-        works.append(solver.work)
-        H_c = _centre(finest, H)
-        current = np.array([H.min(), H_c, H0])
-        if not (np.all(np.isfinite(current)) and math.isfinite(residuals[-1]) and math.isfinite(loads[-1])):
-            raise fail("diverged: non-finite residual or film")
-        if P.max() > BLOW_UP:
-            raise fail(f"diverged: maximum pressure {P.max():.3g} p_h")
-        if len(residuals) > 3 and residuals[-1] > 1e3 * min(residuals):
-            raise fail(f"diverged: residual grew from {min(residuals):.3g} to {residuals[-1]:.3g}")
-        if tolerance is not None and previous is not None:
-            scale = max(abs(H_c), 0.01)
-            if np.max(np.abs(current - previous)) < tolerance * scale and abs(loads[-1]) < tolerance:
-                converged = True
-                break
-        if tolerance is not None and _stagnated(residuals[frozen_at:], STAGNATION):
-            message = (message + "; " if message else "") + (
-                f"stagnated: residual not halved in the last {STAGNATION[1]} cycles")
+        watch.record(float(np.mean(np.abs(r[1:-1, 1:-1])) * finest.hx), solver.load(top, P), solver.work)
+        watched = (H.min(), _centre(finest, H), H0)
+        trouble = _divergence(P, watched, watch.residuals, watch.loads)
+        if trouble:
+            raise fail(trouble)
+        if watch.decide(P, watched):
             break
-        if previous is not None:
-            changes.append(current[0] - previous[0])
-        wet_counts.append(int(np.count_nonzero(P)))
-        if not frozen_at and _alternating(changes) and len(set(wet_counts[-3:])) > 1:
-            # the cavitation boundary hops between nodes from cycle to cycle (H_min alternates): hold
-            # the dry set of the finest grid (and its injections) and let the cycles converge
-            solver.freeze_dry(P)
-            frozen_at = len(residuals)
-            message = f"cavitation set frozen after cycle {frozen_at} (boundary oscillation)"
-        previous = current
     else:
-        if tolerance is None:
-            converged = True
-            message = (message + "; " if message else "") + f"fixed number of cycles ({settings.max_cycles})"
-        else:
-            message = (message + "; " if message else "") + (
-                f"no convergence to {tolerance:g} in {settings.max_cycles} cycles")
+        watch.out_of_cycles(settings.max_cycles)
     if H.min() <= 0.0:
-        converged = False
-        message = (message + "; " if message else "") + (
-            f"film closed: H_min = {H.min():.3g} <= 0 (the grid is too coarse for this load: "
-            f"M = {problem.M:.4g}; finer levels, or a film formula)")
-    record = _record(solver, residuals, loads, works, start, converged, message, tolerance)
+        watch.converged = False
+        watch.note(f"film closed: H_min = {H.min():.3g} <= 0 (the grid is too coarse for this load: "
+                   f"M = {problem.M:.4g}; finer levels, or a film formula)")
+    record = _record(solver, watch, start, watch.converged, watch.message, tolerance)
     return PointEHLSolution(problem=problem, level=levels, X=finest.X, Y=finest.Y, P=P, H=H, H0=float(H0),
                             record=record, settings=settings)
 
@@ -417,12 +398,12 @@ def _centre(level: _Level, H: np.ndarray) -> float:
                  + s * t * H[j + 1, i + 1])
 
 
-def _record(solver, residuals, loads, works, start, converged, message, tolerance) -> ConvergenceRecord:
+def _record(solver, watch, start, converged, message, tolerance) -> ConvergenceRecord:
     s = solver.settings
     return ConvergenceRecord(
         method=f"point FAS multigrid, {s.cycle}-cycles, FFT deformation", levels=len(solver.levels),
-        nodes=solver.levels[-1].n ** 2, residuals=tuple(residuals), load_errors=tuple(loads),
-        work_units=tuple(works), wall_time=time.perf_counter() - start, converged=converged, message=message,
+        nodes=solver.levels[-1].n ** 2, residuals=tuple(watch.residuals), load_errors=tuple(watch.loads),
+        work_units=tuple(watch.works), wall_time=time.perf_counter() - start, converged=converged, message=message,
         tolerance=float("nan") if tolerance is None else tolerance)
 
 

@@ -22,13 +22,15 @@ from __future__ import annotations
 
 import abc
 from collections.abc import Callable, Mapping
+from types import ModuleType
 from typing import Any, ClassVar
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, UnknownModelError
 
 __all__ = [
+    "BUILTIN_MARK",
     "FAMILIES",
     "DensityLaw",
     "FilmModel",
@@ -41,7 +43,11 @@ __all__ = [
     "ViscosityPressureLaw",
     "ViscosityTemperatureLaw",
     "WearModel",
+    "builtin",
+    "builtin_classes",
+    "check_family",
     "float_or_array",
+    "is_builtin",
     "validity_messages",
 ]
 
@@ -275,6 +281,43 @@ FAMILIES: dict[str, type[Model]] = {
     "life_models": LifeModel,
     "traction_models": TractionModel,
 }
+
+
+def check_family(family: str) -> None:
+    """Raise :class:`~camcontact.errors.UnknownModelError` unless ``family`` is one of :data:`FAMILIES`."""
+    if family not in FAMILIES:
+        raise UnknownModelError(
+            f"unknown model family {family!r}; families are: {', '.join(FAMILIES)}"
+        )
+
+
+#: the class attribute that :func:`builtin` sets (read from the class's own namespace, so a
+#: subclass of a built-in is not a built-in)
+BUILTIN_MARK = "__camcontact_builtin__"
+
+
+def builtin(cls: type[Model]) -> type[Model]:
+    """Class decorator marking ``cls`` as a built-in model of its ``family`` under ``cls.name``.
+
+    It only marks the class (and checks its family and name); :mod:`camcontact.registry`
+    registers the marked classes of a family's built-in modules when the family is first
+    looked up, so the models do not depend on the registry.
+    """
+    check_family(cls.family)
+    if not cls.name:
+        raise TypeError(f"{cls.__qualname__} has no 'name'")
+    setattr(cls, BUILTIN_MARK, True)
+    return cls
+
+
+def is_builtin(obj: Any) -> bool:
+    """True for a class marked by :func:`builtin` itself (not by inheritance)."""
+    return isinstance(obj, type) and vars(obj).get(BUILTIN_MARK, False) is True
+
+
+def builtin_classes(module: ModuleType) -> list[type[Model]]:
+    """The classes marked by :func:`builtin` that ``module`` defines, in definition order."""
+    return [obj for obj in vars(module).values() if is_builtin(obj) and obj.__module__ == module.__name__]
 
 
 class CallableModel(Model):

@@ -5,8 +5,7 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
-from ..registry import builtin
-from .base import DensityLaw
+from .base import DensityLaw, builtin
 
 __all__ = ["DowsonHigginsonDensity", "Incompressible"]
 

@@ -24,10 +24,10 @@ from typing import ClassVar
 import attrs
 import numpy as np
 
+from ..ehl.film_formulas import moes_line_film
 from ..ehl.groups import hamrock_line, moes_line
 from ..errors import InputError
-from ..registry import builtin
-from .base import FilmModel
+from .base import FilmModel, builtin
 
 __all__ = ["DowsonHigginson", "DowsonToyoda", "Grubin", "LinePowerLaw", "Moes", "PanHamrock"]
 
@@ -178,45 +178,12 @@ class PanHamrock(LinePowerLaw):
     validity = DOWSON_RANGE
 
 
-def moes_line_film(M, L, *, elasticity: bool = True):
-    """Moes (1992) dimensionless central film H_c = (h_c/R)(2U)^(-1/2) of a line contact.
-
-    .. math::
-        H = \\left[\\left(H_{RI}^{7/3} + H_{EI}^{7/3}\\right)^{3s/7}
-            + \\left(H_{RP}^{-7/2} + H_{EP}^{-7/2}\\right)^{-2s/7}\\right]^{1/s},
-        \\quad s = \\frac{7 + 8\\,e^{-2 H_{EI}/H_{RI}}}{5}
-
-    with H_RI = 3 M^-1, H_EI = 2.621 M^-1/5, H_RP = 1.287 L^2/3, H_EP = 1.311 M^-1/8 L^3/4.
-    L = 0 gives the isoviscous limits; ``elasticity=False`` the rigid asymptotes (H_EI and
-    H_EP dropped, s = 3).
-    """
-    M = np.asarray(M, dtype=float)
-    L = np.asarray(L, dtype=float)
-    h_ri = 3.0 / M
-    h_rp = 1.287 * L ** (2.0 / 3.0)
-    if elasticity:
-        h_ei = 2.621 * M ** -0.2
-        h_ep = 1.311 * M ** -0.125 * L**0.75
-        s = (7.0 + 8.0 * np.exp(-2.0 * h_ei / h_ri)) / 5.0
-        isoviscous = (h_ri ** (7.0 / 3.0) + h_ei ** (7.0 / 3.0)) ** (3.0 * s / 7.0)
-        with np.errstate(divide="ignore"):
-            piezo_sum = np.where(L > 0.0, h_rp ** -3.5 + h_ep ** -3.5, np.inf)
-    else:
-        s = np.full_like(M, 3.0)
-        isoviscous = h_ri**s
-        with np.errstate(divide="ignore"):
-            piezo_sum = np.where(L > 0.0, h_rp ** -3.5, np.inf)
-    piezoviscous = np.where(np.isinf(piezo_sum), 0.0, piezo_sum ** (-2.0 * s / 7.0))
-    H = (isoviscous + piezoviscous) ** (1.0 / s)
-    return float(H) if H.ndim == 0 else H
-
-
 @builtin
 @attrs.frozen
 class Moes(FilmModel):
     """Moes (1992) central film of a line contact, valid over all four EHL regimes.
 
-    Film from :func:`moes_line_film` in the Moes groups M = W'(2U)^-1/2, L = G(2U)^1/4,
+    Film from :func:`~camcontact.ehl.film_formulas.moes_line_film` in the Moes groups M = W'(2U)^-1/2, L = G(2U)^1/4,
     h_c = H R (2U)^1/2 (sum speed 2u_m). It can represent a scene without piezoviscosity
     (alpha = 0, L = 0) and without elasticity (rigid asymptotes).
 

@@ -12,10 +12,10 @@ import math
 
 import attrs
 
+from ..ehl.film_formulas import moes_line_film
 from ..errors import InputError
-from ..registry import builtin
-from .base import FilmModel
-from .film_line import LINE_INPUTS, moes_line_film
+from .base import FilmModel, builtin
+from .film_line import LINE_INPUTS
 
 __all__ = ["Multigrid", "automatic_domain", "solver_laws"]
 

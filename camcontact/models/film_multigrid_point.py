@@ -11,8 +11,7 @@ from __future__ import annotations
 
 import attrs
 
-from ..registry import builtin
-from .base import FilmModel
+from .base import FilmModel, builtin
 from .film_multigrid import solver_laws
 from .film_point import POINT_INPUTS
 

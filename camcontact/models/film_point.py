@@ -10,10 +10,10 @@ from __future__ import annotations
 import attrs
 import numpy as np
 
+from ..ehl.film_formulas import nijenbanning_film
 from ..ehl.groups import hamrock_point, moes_point
 from ..errors import InputError
-from ..registry import builtin
-from .base import FilmModel
+from .base import FilmModel, builtin
 
 __all__ = ["HamrockDowson", "Nijenbanning", "nijenbanning_film"]
 
@@ -71,46 +71,12 @@ class HamrockDowson(FilmModel):
         return {"h_min": h_min, "h_c": h_c, "U": U, "G": G, "W": W, "k": k}
 
 
-def nijenbanning_film(M, L, D):
-    """Nijenbanning–Venner–Moes (1994) dimensionless central film of an elliptical contact.
-
-    H = (h_c/Rx)(2U)^(-1/2), with M = W(2U)^(-3/4), L = G(2U)^(1/4), D = Rx/Ry:
-
-    .. math::
-        H = \\left\\{\\left[H_{RI}^{3s/2} + \\left(H_{EI}^{-4} + H_{00}^{-4}\\right)^{-3s/8}\\right]^{2/(3s)}
-            + \\left(H_{RP}^{-8} + H_{EP}^{-8}\\right)^{-s/8}\\right\\}^{1/s}
-
-    H_RI = 145(1 + 0.796 D^(14/15))^(-15/7) D^-1 M^-2,
-    H_EI = 3.18(1 + 0.006 ln D + 0.63 D^(4/7))^(-14/25) D^(-1/15) M^(-2/15),
-    H_RP = 1.29(1 + 0.691 D)^(-2/3) L^(2/3),
-    H_EP = 1.48(1 + 0.006 ln D + 0.63 D^(4/7))^(-7/20) D^(-1/24) M^(-1/12) L^(3/4),
-    H_00 = 1.8 D^-1, s = 1.5(1 + exp(-1.2 H_EI/H_RI)).
-    """
-    M = np.asarray(M, dtype=float)
-    L = np.asarray(L, dtype=float)
-    D = np.asarray(D, dtype=float)
-    log_d = np.log(D)
-    geometric = 1.0 + 0.006 * log_d + 0.63 * D ** (4.0 / 7.0)
-    h_ri = 145.0 * (1.0 + 0.796 * D ** (14.0 / 15.0)) ** (-15.0 / 7.0) / D / M**2
-    h_ei = 3.18 * geometric ** (-14.0 / 25.0) * D ** (-1.0 / 15.0) * M ** (-2.0 / 15.0)
-    h_rp = 1.29 * (1.0 + 0.691 * D) ** (-2.0 / 3.0) * L ** (2.0 / 3.0)
-    h_ep = 1.48 * geometric ** (-7.0 / 20.0) * D ** (-1.0 / 24.0) * M ** (-1.0 / 12.0) * L**0.75
-    h_00 = 1.8 / D
-    s = 1.5 * (1.0 + np.exp(-1.2 * h_ei / h_ri))
-    isoviscous = (h_ri ** (1.5 * s) + (h_ei**-4 + h_00**-4) ** (-3.0 * s / 8.0)) ** (2.0 / (3.0 * s))
-    with np.errstate(divide="ignore"):
-        piezo_sum = np.where(L > 0.0, h_rp**-8 + h_ep**-8, np.inf)
-    piezoviscous = np.where(np.isinf(piezo_sum), 0.0, piezo_sum ** (-s / 8.0))
-    H = (isoviscous + piezoviscous) ** (1.0 / s)
-    return float(H) if H.ndim == 0 else H
-
-
 @builtin
 @attrs.frozen
 class Nijenbanning(FilmModel):
     """Nijenbanning, Venner & Moes (1994) central film of an elliptical contact.
 
-    Film from :func:`nijenbanning_film` with the Moes point-contact groups (sum speed) and
+    Film from :func:`~camcontact.ehl.film_formulas.nijenbanning_film` with the Moes point-contact groups (sum speed) and
     D = Rx/Ry; h_c = H Rx (2U)^1/2. Handles the isoviscous case (alpha = 0, L = 0). The
     reference gives no numeric validity range; the interpolation is built to hold over the
     EHL regimes, and for wide ellipses it approaches the Moes line-contact formula.

@@ -19,9 +19,8 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..registry import builtin
 from ..units import in_range, number_field
-from .base import FrictionModel, float_or_array
+from .base import FrictionModel, builtin, float_or_array
 from .ferrarese_uehara_contact import (
     K_AT_PAPER,
     RPM_PER_RAD_PER_S,

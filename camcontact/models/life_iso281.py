@@ -32,9 +32,8 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..registry import builtin
 from ..units import in_range, number_field
-from .base import LifeModel
+from .base import LifeModel, builtin
 
 __all__ = ["ISO281", "a_iso_roller", "equivalent_load", "rated_viscosity", "reliability_factor"]
 

@@ -66,9 +66,8 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..registry import builtin
 from ..units import in_range, number_field
-from .base import LifeModel, float_or_array
+from .base import LifeModel, builtin, float_or_array
 
 __all__ = [
     "ELLIPTICAL_E",

@@ -40,8 +40,7 @@ import numpy as np
 from numpy.polynomial import Polynomial
 
 from ..errors import InputError
-from ..registry import builtin
-from .base import MotionLaw
+from .base import MotionLaw, builtin
 
 __all__ = [
     "C1", "C2", "C3", "C4", "C5", "C6",

@@ -25,9 +25,8 @@ import numpy as np
 from ..contact.fastsim import DEFAULT_NX, DEFAULT_NY, fastsim
 from ..contact.kalker import B_OVER_A_RANGE
 from ..errors import InputError
-from ..registry import builtin
 from ..units import in_range, number_field
-from .base import TractionModel, float_or_array
+from .base import TractionModel, builtin, float_or_array
 
 __all__ = ["SACCHETO_MU_MIN", "TRACTION_FLUIDS", "ConstantTraction", "Fastsim", "TractionFluid"]
 

@@ -15,8 +15,7 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..registry import builtin
-from .base import ViscosityPressureLaw
+from .base import ViscosityPressureLaw, builtin
 
 __all__ = ["Barus", "Roelands", "roelands_consistent"]
 

@@ -18,8 +18,7 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..registry import builtin
-from .base import ViscosityTemperatureLaw
+from .base import ViscosityTemperatureLaw, builtin
 
 __all__ = ["AstmD341", "Vogel", "Walther"]
 

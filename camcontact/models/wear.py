@@ -18,9 +18,8 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..registry import builtin
 from ..units import number_field, positive
-from .base import WearModel, float_or_array
+from .base import WearModel, builtin, float_or_array
 from .ferrarese_uehara_contact import (
     K_Q_PAPER,
     RPM_PER_RAD_PER_S,

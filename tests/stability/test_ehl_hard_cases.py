@@ -53,11 +53,12 @@ def test_stagnating_attempt_hands_over_to_the_conservative_settings():
     circle in a limit cycle (residual 6e-5 for all 40 cycles before the stagnation rule); the
     attempt now stops after 10 cycles and the conservative F-cycles converge. Their film agrees
     with an independent solve by conservative W-cycles at a tighter tolerance."""
-    from camcontact.ehl.line_multigrid import ROBUST, STAGNATION, MultigridSettings, _stagnated
+    from camcontact.ehl.cycle_monitor import stagnated
+    from camcontact.ehl.line_multigrid import ROBUST, STAGNATION, MultigridSettings
     from camcontact.models.film_multigrid import automatic_domain
 
-    assert not _stagnated([1e-3 * 0.6**k for k in range(12)])  # slow but steady: keeps going
-    assert _stagnated([6e-5, 5.7e-5, 5.9e-5, 6.4e-5, 6.5e-5, 6.3e-5, 6.3e-5, 6.3e-5, 6.4e-5, 6.5e-5])
+    assert not stagnated([1e-3 * 0.6**k for k in range(12)], STAGNATION)  # slow but steady: keeps going
+    assert stagnated([6e-5, 5.7e-5, 5.9e-5, 6.4e-5, 6.5e-5, 6.3e-5, 6.3e-5, 6.3e-5, 6.4e-5, 6.5e-5], STAGNATION)
     problem = LineEHLProblem(M=2.9147, L=18.507, domain=automatic_domain(2.9147, 18.507))
     solution = solve_multigrid(problem, 8, strict=True)
     record = solution.record

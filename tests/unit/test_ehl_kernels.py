@@ -186,13 +186,13 @@ def test_dense_solver_reports_a_singular_matrix_instead_of_raising():
 @pytest.mark.parametrize("kind", ["V", "F", "W"])
 def test_compiled_cycle_equals_its_twin(kind):
     """One FAS cycle (schedule executor) compiled and as plain Python from the same state."""
-    from camcontact.ehl.line_multigrid import MultigridSettings, _Solver
+    from camcontact.ehl.line_multigrid import LineHierarchy, MultigridSettings
 
     problem = LineEHLProblem(M=20, L=10, alpha=1.7e-8, z=0.68)
     settings = MultigridSettings(cycle=kind)
     results = []
     for compiled in (False, True):
-        solver = _Solver(problem, 4, settings, compiled=compiled)
+        solver = LineHierarchy(problem, 4, settings, compiled=compiled)
         X = solver.levels[-1].X
         P = np.where(np.abs(X) < 1, np.sqrt(np.clip(1 - X * X, 0, None)), 0.0)
         results.append(solver.cycle(3, P, 0.2, np.zeros(X.size), 0.0) + (solver.work,))

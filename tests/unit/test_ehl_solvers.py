@@ -36,12 +36,12 @@ def test_a_converged_solution_is_a_fixed_point_of_the_cycle():
     coarse nodes kept their own equation, the FAS coarse problem placed them exactly on the
     complementarity edge, the coarse grids filled the outlet with small pressures and each cycle
     kicked a converged level-10 solution by ~5e-6 (the free boundary moved by 3 nodes)."""
-    from camcontact.ehl.line_multigrid import _Solver
+    from camcontact.ehl.line_multigrid import LineHierarchy
 
     level = 10
     solution = solve_multigrid(TABLE51, level, tolerance=1e-9)
     assert solution.record.converged
-    solver = _Solver(TABLE51, level, MultigridSettings(), compiled=True)
+    solver = LineHierarchy(TABLE51, level, MultigridSettings(), compiled=True)
     P, H0 = solution.P.copy(), solution.H0
     for _ in range(3):
         P_next, H0 = solver.cycle(level - 1, P, H0, np.zeros(P.size), 0.0)

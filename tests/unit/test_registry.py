@@ -148,3 +148,67 @@ def test_plugins_cli_lists_name_family_source_reference_status(capsys, clean_reg
     out = capsys.readouterr().out
     assert out.splitlines()[0].split() == ["name", "family", "source", "status", "reference"]
     assert "moes" in out and "camcontact (built-in)" in out and "Moes (1992)" in out
+
+
+# ----------------------------------------------------------------------------- built-in marks
+DUPLICATE_SOURCE = textwrap.dedent(
+    '''
+    from camcontact.models.base import DensityLaw, builtin
+
+    @builtin
+    class Incompressible2(DensityLaw):
+        name = "incompressible"
+        def density_ratio(self, pressure):
+            return 1.0
+    '''
+)
+
+
+def test_builtin_marks_only_the_decorated_class():
+    from camcontact.models import film_line
+    from camcontact.models.base import builtin_classes, is_builtin
+
+    assert [cls.__name__ for cls in builtin_classes(film_line)] == [
+        "Grubin", "DowsonHigginson", "DowsonToyoda", "PanHamrock", "Moes"]
+    assert not is_builtin(film_line.LinePowerLaw)  # a base class in the module, unmarked
+
+    class Thinner(film_line.Moes):  # a subclass of a built-in is no built-in
+        name = "thinner"
+
+    assert is_builtin(film_line.Moes) and not is_builtin(Thinner)
+    # classes a module only imports are not its built-ins
+    from camcontact.models import film_multigrid
+
+    assert [cls.name for cls in builtin_classes(film_multigrid)] == ["multigrid"]
+
+
+def test_builtin_checks_family_and_name():
+    from camcontact.models.base import FilmModel, Model, builtin
+
+    class Nameless(FilmModel):
+        pass
+
+    class Familyless(Model):
+        name = "x"
+
+    with pytest.raises(TypeError, match="Nameless has no 'name'"):
+        builtin(Nameless)
+    with pytest.raises(UnknownModelError, match="unknown model family ''"):
+        builtin(Familyless)
+
+
+def test_two_builtins_of_one_name_are_refused_at_lookup(tmp_path, monkeypatch, clean_registry):
+    from camcontact.models.base import FAMILIES
+
+    (tmp_path / "fake_duplicate_builtins.py").write_text(DUPLICATE_SOURCE)
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.setenv(registry.DISABLE_ENV, "1")
+    monkeypatch.setattr(registry, "_builtins", {family: {} for family in FAMILIES})
+    monkeypatch.setattr(registry, "_builtins_imported", set())
+    monkeypatch.setitem(registry.BUILTIN_MODULES, "density_laws",
+                        registry.BUILTIN_MODULES["density_laws"] + ("fake_duplicate_builtins",))
+    try:
+        with pytest.raises(TypeError, match="two built-in density_laws models are named 'incompressible'"):
+            registry.available("density_laws")
+    finally:
+        sys.modules.pop("fake_duplicate_builtins", None)
