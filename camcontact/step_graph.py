@@ -36,7 +36,7 @@ import attrs
 from .errors import InputError
 
 __all__ = ["EFFECTS", "SceneGraph", "Step", "StepRecord", "builder_for", "checked_request", "given", "scene_builder",
-           "step"]
+           "scene_builders", "step"]
 
 #: Physical effects a scene may switch on (each scene supports a subset).
 EFFECTS = ("elasticity", "piezoviscosity", "compressibility", "thermal", "dynamics", "squeeze", "spin")
@@ -255,6 +255,12 @@ def scene_builder(component_type: type):
         return function
 
     return register
+
+
+def scene_builders() -> dict[type, Callable[..., SceneGraph]]:
+    """The registered scene builders by component type (the built-in scenes included)."""
+    importlib.import_module(BUILTIN_SCENES)
+    return dict(_BUILDERS)
 
 
 def builder_for(scene: Any) -> Callable[..., SceneGraph]:
