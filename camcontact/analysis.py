@@ -110,6 +110,7 @@ class Analysis:
             outputs = [outputs]
         self.requested = None if outputs is None else tuple(outputs)
         self.variants = self._expand_variants()
+        self._signatures: dict[tuple, int] = {}
         self.plans = {label: self._plan(models_) for label, models_ in self.variants}
         if self.requested is not None:
             planned = {name for _, outputs, _ in self.plans.values() for name in outputs}
@@ -136,7 +137,7 @@ class Analysis:
             variants.append((label, chosen))
         return variants
 
-    def _plan(self, models: dict[str, Any]) -> tuple[SceneGraph, tuple[str, ...], list[tuple[Step, tuple, tuple]]]:
+    def _plan(self, models: dict[str, Any]) -> tuple[SceneGraph, tuple[str, ...], list[tuple[Step, int, tuple]]]:
         graph = self._builder(self.scene, models=models, effects=self.effects)
         providers: dict[str, Step] = {}
         for step in graph.steps:
@@ -145,17 +146,22 @@ class Analysis:
                     raise RuntimeError(f"scene graph: {name!r} provided by {providers[name].name} and {step.name}")
                 providers[name] = step
 
+        resolved: dict[str, list[str]] = {}
+
         def resolve(key: str, chain: tuple[str, ...]) -> list[str]:
-            """Missing inputs on the way to ``key`` (empty list = reachable)."""
+            """Missing inputs on the way to ``key`` (empty list = reachable); each key resolved once."""
             if key in graph.inputs:
                 return []
             if key not in providers:
                 return [key]
+            if key in resolved:
+                return resolved[key]
             if key in chain:
                 raise RuntimeError(f"scene graph cycle through {key!r}")
             missing: list[str] = []
             for need in providers[key].requires:
                 missing += resolve(need, chain + (key,))
+            resolved[key] = missing
             return missing
 
         if self.requested is None:
@@ -192,23 +198,24 @@ class Analysis:
         for step in order:
             if step.check is not None:
                 step.check(graph.inputs)
-        # a step's signature: its name, model, the values of the graph inputs it reads and the
-        # signatures of its upstream steps, so that variants share exactly the steps that do not
-        # depend on a varied model
-        signatures: dict[str, tuple] = {}
+        # a step's key: the number of its signature — its name, model, the values of the graph inputs
+        # it reads and the keys of its upstream steps — so that variants share exactly the steps that
+        # do not depend on a varied model (numbered in self._signatures, shared by every variant)
+        keys: dict[str, int] = {}
         labels: dict[str, tuple[str, str]] = {}
         for step in order:
             labels[step.name] = step.label(graph.inputs)
-            upstream = sorted({signatures[providers[k].name] for k in step.requires if k in providers
-                               and k not in graph.inputs}, key=repr)
+            upstream = frozenset(keys[providers[k].name] for k in step.requires if k in providers
+                                 and k not in graph.inputs)
             read = tuple((k, input_token(graph.inputs[k])) for k in step.requires if k in graph.inputs)
-            signatures[step.name] = (step.name, *labels[step.name], read, tuple(upstream))
-        return graph, outputs, [(step, signatures[step.name], labels[step.name]) for step in order]
+            signature = (step.name, *labels[step.name], read, upstream)
+            keys[step.name] = self._signatures.setdefault(signature, len(self._signatures))
+        return graph, outputs, [(step, keys[step.name], labels[step.name]) for step in order]
 
     # --------------------------------------------------------------- running
     def run(self) -> Result:
         """Run the planned steps of every variant and return a :class:`Result`."""
-        cache: dict[tuple, Mapping[str, Any]] = {}
+        cache: dict[int, Mapping[str, Any]] = {}
         rows: list[dict[str, Any]] = []
         records: list[StepRecord] = []
         outputs_union: list[str] = []

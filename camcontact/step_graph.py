@@ -26,6 +26,7 @@ names of their own), its steps, default outputs, hints for missing inputs and it
 
 from __future__ import annotations
 
+import functools
 import importlib
 import inspect
 from collections.abc import Callable, Iterable, Mapping
@@ -71,6 +72,7 @@ def step(name: str, provides: Iterable[str], *, model: str | Callable[..., str] 
     return declare
 
 
+@functools.lru_cache(maxsize=None)
 def _parameters(function: Callable) -> tuple[tuple[str, ...], bool]:
     """(names of the named parameters, whether it takes ``**inputs``)."""
     names, extra = [], False
