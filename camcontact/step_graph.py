@@ -166,8 +166,9 @@ class Step:
         call = attrs.evolve(call, extra=extra)
         requires = tuple(dict.fromkeys((*(graph for _, graph in call.arguments), *extra)))
         declared = spec.provides if provides is None else tuple(provides)
-        if not set(declared) <= set(spec.provides):
-            raise TypeError(f"step function {function.__qualname__} does not provide {sorted(set(declared) - set(spec.provides))}")
+        undeclared = sorted(set(declared) - set(spec.provides))
+        if undeclared:
+            raise TypeError(f"step function {function.__qualname__} does not provide {undeclared}")
         provides = tuple(rename.get(output, output) for output in declared)
         renamed = tuple((output, rename[output]) for output in spec.provides if output in rename)
         label = spec.model if model is None else model

@@ -159,8 +159,9 @@ def check_thermal_data(lubricant) -> None:
 
 @step("thermal", provides=("thermal_loading", "thermal_factor"), model="delabenetta_eq44", check=check_thermal_data)
 def inlet_thermal_correction(thermoviscous_coefficient, eta0, u1, u2, lubricant_conductivity):
-    """Thermal loading L = beta eta0 (u1 + u2)^2 / (4 k) [-] and the inlet shear-heating factor phi_T
-    of the film (Murch & Wilson 1975 as Delabenetta 2021 Eq. 44 gives it, with the slide/roll measure)."""
+    """Thermal loading L = beta eta0 (u1 + u2)^2 / k [-] (Delabenetta 2021 Eq. 46) and the inlet
+    shear-heating factor phi_T of the film (Murch & Wilson 1975 as Delabenetta 2021 Eq. 44 gives it,
+    with the slide/roll measure)."""
     L_th = thermal_loading(thermoviscous_coefficient, eta0, u1, u2, lubricant_conductivity)
     return {"thermal_loading": float(L_th), "thermal_factor": inlet_heating_factor(L_th, slide_roll_measure(u1, u2))}
 

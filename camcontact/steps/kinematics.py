@@ -84,7 +84,8 @@ def motion_continuity(program):
     table = program.continuity()
     infinite = table.loc[~table["jerk_finite"], "angle [deg]"].tolist()
     if infinite:
-        return {"motion_continuity": "acceleration jumps (infinite jerk) at " + ", ".join(f"{a:.4g}°" for a in infinite)}
+        where = ", ".join(f"{a:.4g}°" for a in infinite)
+        return {"motion_continuity": f"acceleration jumps (infinite jerk) at {where}"}
     jumps = table.loc[~table["jerk_continuous"], "angle [deg]"].tolist()
     text = "C2 everywhere (finite jerk)"
     return {"motion_continuity": text + (f"; jerk jumps at {', '.join(f'{a:.4g}°' for a in jumps)}" if jumps else "")}

@@ -38,7 +38,8 @@ def rating_life(C, P, n_inner, n_outer):
     return {"L10": L10, "L10h": L10 / relative if relative > 0 else math.inf}  # seconds (SI)
 
 
-@step("modified_life", provides=("a1", "nu1", "kappa", "a_ISO", "L_nm", "L_nmh"), model=lambda life_model: str(life_model))
+@step("modified_life", provides=("a1", "nu1", "kappa", "a_ISO", "L_nm", "L_nmh"),
+      model=lambda life_model: str(life_model))
 def modified_rating_life(life_model, C, P, n_inner, n_outer, lubricant, lubricant_state, fatigue_load_limit,
                          reliability, contamination, pitch_diameter):
     """ISO 281 modified rating life L_nm with a1 (``reliability``), kappa = nu/nu1 and a_ISO (``contamination``

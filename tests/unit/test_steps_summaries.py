@@ -1,0 +1,72 @@
+"""Cycle summaries (camcontact.steps.summaries) called alone, on plain arrays over a cam turn.
+
+Expected values: minima and maxima by inspection of the arrays; means over a turn from the analytic
+integral of a periodic signal (r(t) = r0 (1 + sin(omega t)) has mean r0 and integral r0 T over the period
+T = 2 pi/omega; equally spaced samples of a whole turn reproduce both exactly).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from camcontact.errors import InputError
+from camcontact.steps.summaries import (
+    friction_power_mean,
+    h_min_cycle,
+    jump_margin,
+    peak_contact_force,
+    peak_pressure,
+    wear_rate_mean,
+)
+from step_checks import assert_provides
+
+THETA = np.linspace(0.0, 2 * math.pi, 72, endpoint=False)  # 5 deg steps over one turn
+
+
+def test_extremes_of_force_and_pressure():
+    """jump_margin = smallest contact force (negative: the follower jumps), contact_force_max the largest,
+    p_h_max the largest Hertz pressure."""
+    force = np.array([900.0, 2500.0, -12.5, 1000.0])
+    out = jump_margin(force)
+    assert_provides(jump_margin, out)
+    assert out["jump_margin"] == -12.5
+    out = peak_contact_force(force)
+    assert_provides(peak_contact_force, out)
+    assert out["contact_force_max"] == 2500.0
+    out = peak_pressure(np.array([0.0, 1.1e9, 0.9e9]))
+    assert_provides(peak_pressure, out)
+    assert out["p_h_max"] == 1.1e9
+
+
+def test_h_min_cycle_ignores_angles_without_film():
+    """The thinnest film over the angles that have one (NaN where contact is lost); 0 when none has one."""
+    out = h_min_cycle(np.array([3e-7, np.nan, 1.2e-7, 2e-7]), np.array(["ok", "contact lost", "ok", "ok"]))
+    assert_provides(h_min_cycle, out)
+    assert out["h_min_cycle"] == 1.2e-7
+    assert h_min_cycle(np.full(3, np.nan), np.array(["contact lost"] * 3))["h_min_cycle"] == 0.0
+
+
+def test_friction_power_mean_of_a_periodic_signal():
+    """P(theta) = 40 (1 + sin theta) W: mean 40 W over the turn."""
+    out = friction_power_mean(40.0 * (1 + np.sin(THETA)), THETA)
+    assert_provides(friction_power_mean, out)
+    assert out["friction_power_mean"] == pytest.approx(40.0, rel=1e-12)
+
+
+def test_wear_rate_mean_and_volume_per_turn():
+    """r = 2e-12 (1 + sin theta) m^3/s at omega = 100 rad/s: mean 2e-12 m^3/s, volume per turn
+    integral r dt = 2e-12 x 2 pi/100 m^3."""
+    out = wear_rate_mean(2e-12 * (1 + np.sin(THETA)), 100.0, THETA)
+    assert_provides(wear_rate_mean, out)
+    assert out["wear_rate_mean"] == pytest.approx(2e-12, rel=1e-12)
+    assert out["wear_volume_per_cycle"] == pytest.approx(2e-12 * 2 * math.pi / 100.0, rel=1e-12)
+
+
+def test_means_need_equally_spaced_angles():
+    """Unequally spaced angles are not a time mean at constant speed: InputError."""
+    theta = np.radians([0.0, 10.0, 30.0, 90.0])
+    with pytest.raises(InputError, match="equally spaced"):
+        friction_power_mean(np.ones(4), theta)
+    with pytest.raises(InputError, match="equally spaced"):
+        wear_rate_mean(np.ones(4), 100.0, theta)
