@@ -39,6 +39,7 @@ import attrs
 import numpy as np
 
 from .errors import InputError
+from .models.base import Model
 from .quantities import QUANTITIES
 from .step_graph import EFFECTS, SceneGraph, Step, StepRecord, builder_for
 
@@ -53,12 +54,15 @@ def _model_label(model: Any) -> str:
 
 def input_token(value: Any) -> Any:
     """A hashable stand-in for a graph input that is equal for equal inputs: variants share a step
-    whose inputs and upstream steps agree. Numbers, text, arrays, Quantities and attrs instances
-    (components, model objects) compare by value; any other object by identity."""
+    whose inputs and upstream steps agree. Numbers, text, arrays, Quantities, attrs instances
+    (components, model objects) and other models (by type and attributes) compare by value; any other
+    object by identity."""
     if value is None or isinstance(value, (bool, int, float, complex, str, bytes)):
         return (type(value).__name__, value)
     if isinstance(value, np.ndarray):
-        return ("ndarray", value.shape, value.dtype.str, value.tobytes() if value.dtype != object else id(value))
+        if value.dtype == object:
+            return ("objects", value.shape, tuple(input_token(v) for v in value.flat))
+        return ("ndarray", value.shape, value.dtype.str, value.tobytes())
     if isinstance(value, np.generic):
         return (type(value).__name__, value.item())
     if isinstance(value, (tuple, list, frozenset, set)):
@@ -70,6 +74,8 @@ def input_token(value: Any) -> Any:
         return ("quantity", str(value.units), input_token(np.asarray(value.magnitude)))
     if attrs.has(type(value)):
         return (type(value), tuple(input_token(getattr(value, field.name)) for field in attrs.fields(type(value))))
+    if isinstance(value, Model) and hasattr(value, "__dict__"):  # a model not made with attrs: type and attributes
+        return (type(value), input_token(vars(value)))
     return ("id", id(value))
 
 
@@ -181,15 +187,24 @@ class Analysis:
                     raise InputError(f"output {output!r} of the {graph.kind} scene needs input the scene does not give ({hints})")
         order: list[Step] = []
         seen: set[str] = set()
+        visiting: set[str] = set()
+        reads: dict[str, tuple[str, ...]] = {}  # per step: its requires and the optional names it gets
 
         def visit(key: str) -> None:
             if key in graph.inputs or key not in providers:
                 return
             step = providers[key]
-            if step.name in seen:
+            if step.name in seen or step.name in visiting:
                 return
+            visiting.add(step.name)
             for need in step.requires:
                 visit(need)
+            for name in step.optional:  # read when the graph can give it without a circle through this step
+                if name in providers and not resolve(name, ()):
+                    visit(name)
+            visiting.discard(step.name)
+            reads[step.name] = step.requires + tuple(
+                name for name in step.optional if name in graph.inputs or (name in providers and providers[name].name in seen))
             seen.add(step.name)
             order.append(step)
 
@@ -198,17 +213,18 @@ class Analysis:
         for step in order:
             if step.check is not None:
                 step.check(graph.inputs)
-        # a step's key: the number of its signature — its name, model, the values of the graph inputs
-        # it reads and the keys of its upstream steps — so that variants share exactly the steps that
-        # do not depend on a varied model (numbered in self._signatures, shared by every variant)
+        # a step's key: the number of its signature — its name, model, what it runs (the step function
+        # and its binding; a hand-made step's own callable), the values of the graph inputs it reads and
+        # the keys of its upstream steps — so that variants share exactly the steps that do not depend
+        # on a varied model (numbered in self._signatures, shared by every variant)
         keys: dict[str, int] = {}
         labels: dict[str, tuple[str, str]] = {}
         for step in order:
             labels[step.name] = step.label(graph.inputs)
-            upstream = frozenset(keys[providers[k].name] for k in step.requires if k in providers
+            upstream = frozenset(keys[providers[k].name] for k in reads[step.name] if k in providers
                                  and k not in graph.inputs)
-            read = tuple((k, input_token(graph.inputs[k])) for k in step.requires if k in graph.inputs)
-            signature = (step.name, *labels[step.name], read, upstream)
+            read = tuple((k, input_token(graph.inputs[k])) for k in reads[step.name] if k in graph.inputs)
+            signature = (step.name, *labels[step.name], step.run, step.provides, read, upstream)
             keys[step.name] = self._signatures.setdefault(signature, len(self._signatures))
         return graph, outputs, [(step, keys[step.name], labels[step.name]) for step in order]
 

@@ -27,7 +27,6 @@ names of their own), its steps, default outputs, hints for missing inputs and it
 from __future__ import annotations
 
 import functools
-import importlib
 import inspect
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
@@ -36,8 +35,8 @@ import attrs
 
 from .errors import InputError
 
-__all__ = ["EFFECTS", "SceneGraph", "Step", "StepRecord", "builder_for", "checked_request", "given", "scene_builder",
-           "scene_builders", "step"]
+__all__ = ["EFFECTS", "SceneGraph", "Step", "StepRecord", "add_scene_loader", "builder_for", "checked_request", "given",
+           "scene_builder", "scene_builders", "step"]
 
 #: Physical effects a scene may switch on (each scene supports a subset).
 EFFECTS = ("elasticity", "piezoviscosity", "compressibility", "thermal", "dynamics", "squeeze", "spin")
@@ -93,10 +92,12 @@ class _Call:
     function: Callable
     arguments: tuple[tuple[str, str], ...]  #: (parameter, graph name)
     extra: tuple[str, ...] = ()  #: graph names passed through ``**inputs``
+    optional: tuple[str, ...] = ()  #: graph names passed through ``**inputs`` when the state has them
 
     def __call__(self, state: Mapping[str, Any]) -> Any:
         kwargs = {parameter: state[name] for parameter, name in self.arguments}
         kwargs.update((name, state[name]) for name in self.extra)
+        kwargs.update((name, state[name]) for name in self.optional if name in state)
         return self.function(**kwargs)
 
     def with_available(self, inputs: Mapping[str, Any]) -> Any:
@@ -141,43 +142,30 @@ class Step:
     model: Any = ""
     version: Any = ""
     check: Callable[[Mapping[str, Any]], None] | None = attrs.field(default=None, repr=False)
+    #: names the step reads when the graph can give them (a model's ``optional_requires``), else not
+    optional: tuple[str, ...] = ()
 
     @classmethod
     def of(cls, function: Callable, *, name: str | None = None, rename: Mapping[str, str] | None = None,
-           extra: Iterable[str] = (), provides: Iterable[str] | None = None, model: Any = None) -> Step:
+           extra: Iterable[str] = (), optional: Iterable[str] = (), provides: Iterable[str] | None = None,
+           model: Any = None) -> Step:
         """The graph node of a :func:`step` function.
 
         ``rename`` maps the function's parameter and output names to graph names; ``extra`` names the
         state values passed through its ``**inputs`` parameter (those it names as parameters anyway are
-        dropped); ``provides`` narrows the declared outputs
-        to those this binding gives (a film model without h_min); ``name`` and ``model`` override the
-        declared step name and model label.
+        dropped) and ``optional`` those passed there only when the graph can give them; ``provides``
+        narrows the declared outputs to those this binding gives (a film model without h_min);
+        ``name`` and ``model`` override the declared step name and model label. Bindings are cached:
+        the same arguments give the same node.
         """
-        spec = getattr(function, "step", None)
-        if not isinstance(spec, StepSpec):
-            raise TypeError(f"{getattr(function, '__qualname__', function)!r} is not a step function (use @step)")
-        rename = dict(rename or {})
-        names, takes_extra = _parameters(function)
-        call = _bind(function, rename)
-        named = {graph for _, graph in call.arguments}
-        extra = tuple(name for name in dict.fromkeys(extra) if name not in named)
-        if extra and not takes_extra:
-            raise TypeError(f"step function {function.__qualname__} takes no **inputs for {list(extra)}")
-        call = attrs.evolve(call, extra=extra)
-        requires = tuple(dict.fromkeys((*(graph for _, graph in call.arguments), *extra)))
-        declared = spec.provides if provides is None else tuple(provides)
-        undeclared = sorted(set(declared) - set(spec.provides))
-        if undeclared:
-            raise TypeError(f"step function {function.__qualname__} does not provide {undeclared}")
-        provides = tuple(rename.get(output, output) for output in declared)
-        renamed = tuple((output, rename[output]) for output in spec.provides if output in rename)
-        label = spec.model if model is None else model
-        return cls(
-            name=name or spec.name, requires=requires, provides=provides, run=_Outputs(call, renamed),
-            model=_bind(label, rename) if callable(label) else label,
-            version=_bind(spec.version, rename) if callable(spec.version) else spec.version,
-            check=None if spec.check is None else _bind(spec.check, rename).with_available,
-        )
+        try:
+            return _node(cls, function, name, tuple(sorted((rename or {}).items())), tuple(extra), tuple(optional),
+                         None if provides is None else tuple(provides), model)
+        except TypeError as exc:
+            if "unhashable" not in str(exc):
+                raise
+        return _node.__wrapped__(cls, function, name, tuple(sorted((rename or {}).items())), tuple(extra),
+                                 tuple(optional), None if provides is None else tuple(provides), model)
 
     def label(self, inputs: Mapping[str, Any]) -> tuple[str, str]:
         """(model, version) of the step record, evaluated with the graph ``inputs``."""
@@ -187,6 +175,37 @@ class Step:
             return "" if value is None else str(value)
 
         return text(self.model), text(self.version)
+
+
+@functools.lru_cache(maxsize=1024)
+def _node(cls: type[Step], function: Callable, name: str | None, rename_items: tuple, extra: tuple, optional: tuple,
+          provides: tuple | None, model: Any) -> Step:
+    """:meth:`Step.of` (cached by its arguments)."""
+    spec = getattr(function, "step", None)
+    if not isinstance(spec, StepSpec):
+        raise TypeError(f"{getattr(function, '__qualname__', function)!r} is not a step function (use @step)")
+    rename = dict(rename_items)
+    names, takes_extra = _parameters(function)
+    call = _bind(function, rename)
+    named = {graph for _, graph in call.arguments}
+    extra = tuple(name for name in dict.fromkeys(extra) if name not in named)
+    optional = tuple(name for name in dict.fromkeys(optional) if name not in named and name not in extra)
+    if (extra or optional) and not takes_extra:
+        raise TypeError(f"step function {function.__qualname__} takes no **inputs for {list(extra + optional)}")
+    call = attrs.evolve(call, extra=extra, optional=optional)
+    requires = tuple(dict.fromkeys((*(graph for _, graph in call.arguments), *extra)))
+    declared = spec.provides if provides is None else provides
+    undeclared = sorted(set(declared) - set(spec.provides))
+    if undeclared:
+        raise TypeError(f"step function {function.__qualname__} does not provide {undeclared}")
+    renamed = tuple((output, rename[output]) for output in spec.provides if output in rename)
+    label = spec.model if model is None else model
+    return cls(
+        name=name or spec.name, requires=requires, provides=tuple(rename.get(output, output) for output in declared),
+        run=_Outputs(call, renamed), model=_bind(label, rename) if callable(label) else label,
+        version=_bind(spec.version, rename) if callable(spec.version) else spec.version,
+        check=None if spec.check is None else _bind(spec.check, rename).with_available, optional=optional,
+    )
 
 
 @attrs.frozen
@@ -241,9 +260,7 @@ def checked_request(kind: str, models: Mapping[str, Any], effects: Iterable[str]
 
 # ----------------------------------------------------------------------------- builders
 _BUILDERS: dict[type, Callable[..., SceneGraph]] = {}
-#: the package whose import registers the built-in scene builders; imported on the first lookup
-#: (as the registry imports its built-in models), so importing camcontact loads no scene
-BUILTIN_SCENES = "camcontact.scenes"
+_LOADERS: list[Callable[[], None]] = []
 
 
 def scene_builder(component_type: type):
@@ -260,15 +277,30 @@ def scene_builder(component_type: type):
     return register
 
 
+def add_scene_loader(loader: Callable[[], None]) -> None:
+    """Register ``loader``, a function that registers scene builders, to be called on the first lookup.
+
+    The package registers the import of its built-in scenes this way (``camcontact/__init__.py``), so
+    that importing camcontact loads no scene and this module needs to know none.
+    """
+    _LOADERS.append(loader)
+
+
+def _load_scenes() -> None:
+    for loader in list(_LOADERS):
+        loader()
+        _LOADERS.remove(loader)
+
+
 def scene_builders() -> dict[type, Callable[..., SceneGraph]]:
     """The registered scene builders by component type (the built-in scenes included)."""
-    importlib.import_module(BUILTIN_SCENES)
+    _load_scenes()
     return dict(_BUILDERS)
 
 
 def builder_for(scene: Any) -> Callable[..., SceneGraph]:
     """The registered graph builder of ``scene``'s type (InputError listing the scene types if none)."""
-    importlib.import_module(BUILTIN_SCENES)
+    _load_scenes()
     for cls in type(scene).__mro__:
         if cls in _BUILDERS:
             return _BUILDERS[cls]

@@ -3,8 +3,9 @@
 A scene module states its inputs (SI values of its component, the chosen models and the effect
 switches, under names of their own), its step list, its default outputs and effects, the hints for
 missing inputs and its plot; the computations are the step functions of :mod:`camcontact.steps`.
-Importing this package registers the built-in scenes with :mod:`camcontact.step_graph` (the analysis
-imports it on its first lookup).
+Importing this package registers the built-in scenes with :mod:`camcontact.step_graph`;
+``camcontact/__init__.py`` registers that import as a scene loader, so it happens on the first scene
+lookup of an Analysis, not when camcontact is imported.
 
 How to add a step or an effect
 ------------------------------

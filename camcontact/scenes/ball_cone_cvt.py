@@ -50,11 +50,11 @@ from ..models.life_lundberg_palmgren import LundbergPalmgren
 from ..models.traction import Fastsim
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import ball_cone_hertz
-from ..steps.film import ball_cone_films, film_parameter, resolve_film_model
+from ..steps.film import ball_cone_films, film_parameter, films_of, resolve_film_model
 from ..steps.forces import ball_cone_contact_forces
 from ..steps.kinematics import ball_cone_motion
 from ..steps.life import ball_cone_life
-from ..steps.lubricant import lubricant_inputs, lubricant_state
+from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import ball_cone_slice_stresses
 from ..steps.traction import ball_cone_traction
 from .ball_cone_cvt_plots import plot_ball_cone_cvt
@@ -98,7 +98,7 @@ def ball_cone_cvt_inputs(scene: LoadedBallConeCVT, effects: frozenset) -> dict[s
         "cone_angle": si.cone_angle, "cone_contact_radius": si.cone_contact_radius, "cam_ramp_angle": si.cam_ramp_angle,
         "cam_radius": si.cam_radius, "cam_ball_count": cvt.cam_ball_count, "clamping": cvt.clamping,
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": False, "spin": "spin" in effects,
-        **lubricant_inputs(cvt.lubricant, None if scene.temperature is None else scene.si.temperature),
+        **lubricant_inputs(cvt.lubricant, scene.si.temperature),
     } | given(sigma=si.roughness)
 
 
@@ -111,7 +111,11 @@ def slot_models(models: Mapping[str, Any]) -> dict[str, Any]:
             raise InputError(f"ball_cone_cvt scene: {slot} = {value!r}; allowed: {', '.join(allowed)}")
     for slot, family, cls, default in (("traction", "traction_models", Fastsim, "fastsim"),
                                        ("life", "life_models", LundbergPalmgren, "lundberg_palmgren")):
-        model = registry.get(family, models.get(slot, default))
+        spec = models.get(slot, default)
+        kind = registry.get_class(family, spec) if isinstance(spec, str) else spec
+        if isinstance(kind, type) and not issubclass(kind, cls):
+            raise InputError(f"ball_cone_cvt scene: the {family} slot needs a {cls.__name__} model, got {spec!r}")
+        model = registry.get(family, spec)
         if not isinstance(model, cls):
             raise InputError(f"ball_cone_cvt scene: the {family} slot needs a {cls.__name__} model, got {model!r}")
         chosen[f"{slot}_model"] = model
@@ -129,7 +133,8 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
                                     where="ball_cone_cvt scene: ", contact="the ball-cone contact")
     steps = [
         Step.of(ball_cone_motion), Step.of(ball_cone_contact_forces), Step.of(ball_cone_hertz),
-        Step.of(lubricant_state), Step.of(ball_cone_films),
+        lubricant_step(scene.cvt.lubricant, scene.si.temperature),
+        Step.of(ball_cone_films, provides=tuple(f"{q}_{side}" for q in films_of(film_model) for side in SIDES)),
         *(Step.of(film_parameter, name=f"lambda_{side}", rename={"h": f"h_min_{side}", "sigma1": "sigma",
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{side}"})
           for side in SIDES),

@@ -49,7 +49,7 @@ from ..steps.forces import load_distribution
 from ..steps.friction import roller_friction
 from ..steps.kinematics import bearing_kinematics
 from ..steps.life import bearing_equivalent_load, modified_rating_life, rating_life
-from ..steps.lubricant import lubricant_inputs, lubricant_state
+from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import most_loaded_subsurface
 from .bearing_plots import plot_bearing
 
@@ -94,7 +94,7 @@ def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
         "gamma": bearing.gamma, "pitch_diameter": bearing.d_m, "roller_diameter": b_si.roller_diameter,
         "contact_radii": bearing.contact_radii, "roller_length": b_si.roller_length,
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": "compressibility" in effects,
-        **lubricant_inputs(scene.lubricant, None if scene.temperature is None else scene.si.temperature),
+        **lubricant_inputs(scene.lubricant, scene.si.temperature),
     }
     material = bearing.material
     if material is not None:
@@ -118,7 +118,8 @@ def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: f
     basis = "h_min" if "h_min" in films else "h_c"
     steps = [
         Step.of(load_distribution), Step.of(bearing_kinematics), Step.of(roller_hertz),
-        Step.of(most_loaded_subsurface), Step.of(lubricant_state),
+        Step.of(most_loaded_subsurface),
+        lubricant_step(scene.lubricant, scene.si.temperature),
         Step.of(roller_films, provides=(*(f"{q}_{race}" for q in films for race in RACES), "h_min_bearing")),
         *(Step.of(film_parameter, name=f"lambda_{race}", rename={"h": f"{basis}_{race}", "sigma1": "sigma",
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{race}"})

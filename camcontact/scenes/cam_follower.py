@@ -34,7 +34,7 @@ from ..steps.forces import (FORCES_1DOF, jump_report, lumped_dynamics, minimum_s
                             prescribed_motion_forces, valve_train_natural_frequency)
 from ..steps.friction import SlotModel, cam_friction, cam_wear
 from ..steps.kinematics import FOLLOWER_KINEMATICS, follower_motion, motion_continuity
-from ..steps.lubricant import lubricant_inputs, lubricant_state
+from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.summaries import (friction_power_mean, h_min_cycle, jump_margin, peak_contact_force, peak_pressure,
                                wear_rate_mean)
 from .cam_follower_plots import plot_cam_follower
@@ -83,7 +83,7 @@ def cam_follower_inputs(scene: CamFollower, effects: frozenset) -> dict[str, Any
         # the thesis convention feeds the films the mean speed where Moes uses the sum (u_m / 2)
         "film_speed_factor": 0.5 if scene.convention == "thesis" else 1.0,
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": "compressibility" in effects,
-        **lubricant_inputs(scene.lubricant, None if scene.temperature is None else scene.si.temperature),
+        **lubricant_inputs(scene.lubricant, scene.si.temperature),
     }
     return inputs | given(hardness=cam.material.si.hardness, sigma1=cam.si.roughness, sigma2=follower.si.roughness)
 
@@ -102,12 +102,14 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
         Step.of(follower_motion), Step.of(motion_continuity), Step.of(valve_train_natural_frequency),
         Step.of(minimum_spring_stiffness), Step.of(jump_margin),
         Step.of(lumped_dynamics if "dynamics" in effects else prescribed_motion_forces),
-        Step.of(normal_force), Step.of(jump_report), Step.of(cycle_hertz), Step.of(lubricant_state),
+        Step.of(normal_force), Step.of(jump_report), Step.of(cycle_hertz),
+        lubricant_step(scene.lubricant, scene.si.temperature),
         Step.of(cycle_ehl_groups),
         Step.of(transient_films if "squeeze" in effects else quasi_steady_films,
                 provides=(*films_of(film_model), "film_regime", "film_solutions")),
         Step.of(numerical_film_details), Step.of(film_parameter, rename={"h": "h_min", "Lambda": "Lambda_min"}),
-        Step.of(cam_friction, extra=friction.requires), Step.of(cam_wear, extra=wear.requires),
+        Step.of(cam_friction, extra=friction.requires, optional=friction.optional),
+        Step.of(cam_wear, extra=wear.requires, optional=wear.optional),
         Step.of(peak_contact_force), Step.of(peak_pressure), Step.of(h_min_cycle), Step.of(friction_power_mean),
         Step.of(wear_rate_mean),
     ]

@@ -24,9 +24,10 @@ from ..errors import InputError
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import APPROACHES, line_geometry, line_hertz
 from ..steps.film import (composite_roughness_step, ehl_groups, film_parameter, films_of, inlet_thermal_correction,
-                          isothermal_films, line_film, lubrication_regime_step, resolve_film_model, thermal_films)
+                          isothermal_films, line_film, lubrication_regime_step, model_reads, resolve_film_model,
+                          thermal_films)
 from ..steps.kinematics import surface_kinematics
-from ..steps.lubricant import lubricant_inputs, lubricant_state
+from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import line_subsurface_stresses
 from .line_contact_plots import plot_line_contact
 
@@ -60,18 +61,21 @@ def line_contact_inputs(contact: LineContact, effects: frozenset) -> dict[str, A
         "R1": b1.signed_radius, "R2": b2.signed_radius, "u1": b1.si.speed, "u2": b2.si.speed,
         "w": contact.w, "friction_coefficient": contact.friction_coefficient,
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": "compressibility" in effects,
-        **lubricant_inputs(contact.lubricant, None if contact.temperature is None else contact.si.temperature),
+        **lubricant_inputs(contact.lubricant, contact.si.temperature),
     }
     return inputs | given(F=contact.si.load, length=contact.si.length, sigma1=b1.si.roughness, sigma2=b2.si.roughness)
 
 
 def film_steps(film_model: Any, thermal: bool) -> list[Step]:
-    """Lubricant, EHL groups, the film by ``film_model``, its thermal correction and Lambda per film."""
+    """EHL groups, the film by ``film_model`` (with the further state names it reads), its thermal
+    correction and Lambda per film."""
     films = films_of(film_model)
     isothermal = tuple(f"{q}_isothermal" for q in films)
     basis = "h_min" if "h_min" in films else "h_c"
     steps = [
-        Step.of(lubricant_state), Step.of(ehl_groups), Step.of(line_film, provides=(*isothermal, "film_validity")),
+        Step.of(ehl_groups),
+        Step.of(line_film, provides=(*isothermal, "film_validity"), extra=model_reads(film_model).required,
+                optional=model_reads(film_model).optional),
         Step.of(thermal_films if thermal else isothermal_films, extra=isothermal, provides=films),
         *(Step.of(film_parameter, name="lambda" if q == basis else f"lambda_{q[2:]}",
                   rename={"h": q, "Lambda": f"Lambda_{q[2:]}"}) for q in films),
@@ -91,7 +95,7 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
     film_model = resolve_film_model(models.get("film", DEFAULT_FILM), effects=effects)
     steps = [Step.of(line_geometry), Step.of(surface_kinematics), Step.of(line_hertz), Step.of(APPROACHES[approach]),
              Step.of(line_subsurface_stresses), Step.of(composite_roughness_step),
-             *film_steps(film_model, "thermal" in effects)]
+             lubricant_step(contact.lubricant, contact.si.temperature), *film_steps(film_model, "thermal" in effects)]
     return SceneGraph(
         kind="line_contact", inputs={**line_contact_inputs(contact, effects), "film_model": film_model},
         steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS, input_hints=HINTS, plotter=plot_line_contact,

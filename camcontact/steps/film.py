@@ -31,7 +31,8 @@ from .contact import RACES
 __all__ = [
     "FILMS", "ball_cone_films", "bearing_lubrication", "check_thermal_data", "composite_roughness_step",
     "ehl_groups", "film_parameter", "films_of", "inlet_thermal_correction", "isothermal_films", "line_film",
-    "lubrication_regime_step", "raceway_roughness", "resolve_film_model", "roller_films", "thermal_films",
+    "lubrication_regime_step", "model_reads", "raceway_roughness", "resolve_film_model", "roller_films",
+    "thermal_films",
 ]
 
 #: the film thicknesses a film model may give: central and minimum [m]
@@ -90,6 +91,26 @@ def resolve_film_model(spec: Any, *, geometry: str = "line", effects: Iterable[s
     return candidate  # a model without such switches: it receives alpha_effective = 0 when piezoviscosity is off
 
 
+#: the state names the film steps hand a film model themselves
+FILM_STATE = ("R", "w", "E_reduced", "u_m", "eta0", "alpha", "lubricant_state", "density_law")
+
+
+@attrs.frozen
+class ModelReads:
+    """The state names a model reads beyond those its step hands it: required and optional ones."""
+
+    required: tuple[str, ...]
+    optional: tuple[str, ...]
+
+
+def model_reads(model: Any, supplied: Iterable[str] = FILM_STATE) -> ModelReads:
+    """What ``model`` reads (its ``requires`` and ``optional_requires``) beyond the ``supplied`` names, so
+    that its step declares them: the plan then gives them, or says up front which one is missing."""
+    supplied = set(supplied)
+    return ModelReads(tuple(n for n in getattr(model, "requires", ()) if n not in supplied),
+                      tuple(n for n in getattr(model, "optional_requires", ()) if n not in supplied))
+
+
 def model_name(film_model) -> str:
     """The step record's model label of a film model."""
     return getattr(film_model, "name", "film")
@@ -117,10 +138,12 @@ def ehl_groups(w, R, E_reduced, u_m, eta0, alpha, piezoviscosity):
 
 @step("film", provides=("h_c_isothermal", "h_min_isothermal", "film_validity"), model=model_name,
       version=model_version)
-def line_film(film_model, R, w, E_reduced, u_m, eta0, alpha_effective, U, G, W, M, L, lubricant_state, density_law):
+def line_film(film_model, R, w, E_reduced, u_m, eta0, alpha_effective, U, G, W, M, L, lubricant_state, density_law,
+              **inputs):
     """The isothermal films [m] of a line contact by ``film_model`` and the model's validity note
-    ("ok", its range warnings, or the numerical solver's non-convergence)."""
-    state = {"R": R, "w": w, "E_reduced": E_reduced, "u_m": u_m, "eta0": eta0, "alpha": alpha_effective,
+    ("ok", its range warnings, or the numerical solver's non-convergence); ``inputs``: the further state
+    names the model reads (:func:`model_reads`)."""
+    state = {**inputs, "R": R, "w": w, "E_reduced": E_reduced, "u_m": u_m, "eta0": eta0, "alpha": alpha_effective,
              "lubricant_state": lubricant_state, "density_law": density_law}
     produced = film_model(state)
     messages = film_model.check_validity({"U": U, "G": G, "W": W, "M": M, "L": L} | dict(produced))
@@ -235,11 +258,11 @@ def bearing_lubrication(Q, Lambda_inner, Lambda_outer):
 @step("film", provides=("h_c_in", "h_min_in", "h_c_out", "h_min_out"), model=model_name, version=model_version)
 def ball_cone_films(film_model, Rx, Ry, normal_force, E_reduced, rolling_speed_in, rolling_speed_out, eta0, alpha,
                     piezoviscosity, lubricant_state, density_law):
-    """Central and minimum films [m] at the CVT's input and output contact (point film model)."""
+    """Central and minimum films [m] at the CVT's input and output contact (those the point film model gives)."""
     out = {}
     for side, speed in (("in", rolling_speed_in), ("out", rolling_speed_out)):
         produced = film_model({"Rx": Rx, "Ry": Ry, "F": normal_force, "E_reduced": E_reduced, "u_m": speed,
                                "eta0": eta0, "alpha": alpha if piezoviscosity else 0.0,
                                "lubricant_state": lubricant_state, "density_law": density_law})
-        out[f"h_c_{side}"], out[f"h_min_{side}"] = float(produced["h_c"]), float(produced["h_min"])
+        out.update({f"{q}_{side}": float(produced[q]) for q in films_of(film_model)})
     return out

@@ -66,6 +66,11 @@ class SlotModel:
         return {}
 
     @property
+    def optional(self) -> tuple[str, ...]:
+        """The state names the model reads when the scene has them, under the scene's names."""
+        return tuple(ALIASES.get(name, name) for name in getattr(self.kind, "optional_requires", ()))
+
+    @property
     def requires(self) -> tuple[str, ...]:
         """The state names the model reads, under the scene's names (:data:`ALIASES`), with the
         pseudo-input of a missing scene coefficient."""

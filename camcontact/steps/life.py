@@ -8,6 +8,7 @@ Forces [N], speeds [rev/s] unless named otherwise, lives in revolutions, cycles 
 
 from __future__ import annotations
 
+import inspect
 import math
 
 import numpy as np
@@ -18,7 +19,8 @@ from ..models.life_iso281 import LIFE_EXPONENT, equivalent_load
 from ..models.life_lundberg_palmgren import life_time, system_life
 from ..step_graph import step
 
-__all__ = ["ball_cone_life", "bearing_equivalent_load", "modified_rating_life", "rating_life"]
+__all__ = ["ball_cone_life", "bearing_equivalent_load", "check_rating_life_model", "modified_rating_life",
+           "rating_life"]
 
 
 @step("equivalent_load", provides=("P",), model="iso281")
@@ -38,8 +40,19 @@ def rating_life(C, P, n_inner, n_outer):
     return {"L10": L10, "L10h": L10 / relative if relative > 0 else math.inf}  # seconds (SI)
 
 
+def check_rating_life_model(life_model) -> None:
+    """InputError unless the life model (a name or an instance) is an ISO 281 modified rating life: a model
+    made from the scene's ``reliability`` and ``contamination``."""
+    if not isinstance(life_model, str):
+        return
+    parameters = inspect.signature(registry.get_class("life_models", life_model)).parameters
+    if not {"reliability", "contamination"} <= set(parameters):
+        raise InputError(f"bearing scene: life model {life_model!r} is not an ISO 281 modified rating life (it takes "
+                         f"no reliability and contamination); the life slot takes 'iso281' or a model instance")
+
+
 @step("modified_life", provides=("a1", "nu1", "kappa", "a_ISO", "L_nm", "L_nmh"),
-      model=lambda life_model: str(life_model))
+      model=lambda life_model: str(life_model), check=check_rating_life_model)
 def modified_rating_life(life_model, C, P, n_inner, n_outer, lubricant, lubricant_state, fatigue_load_limit,
                          reliability, contamination, pitch_diameter):
     """ISO 281 modified rating life L_nm with a1 (``reliability``), kappa = nu/nu1 and a_ISO (``contamination``

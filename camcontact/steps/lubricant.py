@@ -11,24 +11,28 @@ from __future__ import annotations
 from typing import Any
 
 from ..errors import InputError
-from ..step_graph import step
+from ..step_graph import Step, step
 
-__all__ = ["LUBRICANT_OUTPUTS", "lubricant_inputs", "lubricant_label", "lubricant_state"]
+__all__ = ["LUBRICANT_OUTPUTS", "check_pressure_viscosity", "isothermal_lubricant_state", "lubricant_inputs",
+           "lubricant_label", "lubricant_state", "lubricant_step"]
 
 LUBRICANT_OUTPUTS = ("lubricant_state", "eta0", "alpha", "roelands_z", "kinematic_viscosity",
                      "thermoviscous_coefficient", "lubricant_conductivity", "density_law")
 
 
 def lubricant_inputs(lubricant: Any, temperature: float | None) -> dict[str, Any]:
-    """The graph inputs of a scene's lubricant: ``lubricant`` (when given) and ``temperature`` [K] (when
-    given, or None for a lubricant whose viscosity does not depend on it). Without them the lubricant
-    step's missing input is reported up front, with the scene's hint."""
-    if lubricant is None:  # the lubricant is what is missing (the temperature is not asked for then)
-        return {"temperature": temperature}
-    inputs: dict[str, Any] = {"lubricant": lubricant}
-    if temperature is not None or lubricant.isothermal:
-        inputs["temperature"] = temperature
-    return inputs
+    """The graph inputs of a scene's lubricant: ``lubricant`` and ``temperature`` [K], each when given
+    (an input left out is reported up front, with the scene's hint, when an output needs it)."""
+    return {name: value for name, value in (("lubricant", lubricant), ("temperature", temperature))
+            if value is not None}
+
+
+def lubricant_step(lubricant: Any, temperature: float | None) -> Step:
+    """The lubricant step of a scene: :func:`isothermal_lubricant_state` for a lubricant whose viscosity
+    does not depend on the temperature when none is given (and when there is no lubricant: the step then
+    reports the lubricant missing), else :func:`lubricant_state` (which requires the temperature)."""
+    isothermal = lubricant is None or (lubricant.isothermal and temperature is None)
+    return Step.of(isothermal_lubricant_state if isothermal else lubricant_state)
 
 
 def lubricant_label(lubricant) -> str:
@@ -48,10 +52,21 @@ def check_pressure_viscosity(lubricant, piezoviscosity) -> None:
 
 @step("lubricant", provides=LUBRICANT_OUTPUTS, model=lubricant_label, check=check_pressure_viscosity)
 def lubricant_state(lubricant, temperature, compressibility):
-    """The lubricant at ``temperature`` [K] (None: an isothermal lubricant): its state object, eta0
+    """The lubricant at ``temperature`` [K]: its state object, eta0
     [Pa s], alpha [1/Pa], Roelands z, kinematic viscosity [m^2/s], beta [1/K], conductivity [W/(m K)]
     and the density law the numerical film uses (``"incompressible"`` unless ``compressibility``)."""
     state = lubricant.state(temperature)
+    return _outputs(lubricant, state, compressibility)
+
+
+@step("lubricant", provides=LUBRICANT_OUTPUTS, model=lubricant_label, check=check_pressure_viscosity)
+def isothermal_lubricant_state(lubricant, compressibility):
+    """:func:`lubricant_state` of a lubricant whose viscosity does not depend on the temperature, when the
+    scene gives none."""
+    return _outputs(lubricant, lubricant.state(None), compressibility)
+
+
+def _outputs(lubricant, state, compressibility) -> dict:
     return {
         "lubricant_state": state, "eta0": state.eta0, "alpha": state.alpha,
         "roelands_z": state.roelands_z, "kinematic_viscosity": state.kinematic_viscosity,

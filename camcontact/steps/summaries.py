@@ -42,7 +42,7 @@ def peak_pressure(p_h):
 
 
 @step("h_min_cycle", provides=("h_min_cycle",))
-def h_min_cycle(h_min, film_regime):
+def h_min_cycle(h_min):
     """The thinnest film over the turn [m] (0 when no angle has one)."""
     return {"h_min_cycle": float(np.nanmin(h_min)) if np.any(np.isfinite(h_min)) else 0.0}
 

@@ -54,7 +54,7 @@ def test_the_private_import_check_finds_one():
 
 
 def test_scene_builders_are_short():
-    builders = scene_builders()
+    builders = {cls: f for cls, f in scene_builders().items() if f.__module__.startswith("camcontact.scenes.")}
     assert {cls.__name__ for cls in builders} == {"LineContact", "CamFollower", "RacewayContact", "LoadedBearing",
                                                   "LoadedBallConeCVT"}
     for function in builders.values():

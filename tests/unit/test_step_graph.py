@@ -119,3 +119,15 @@ def test_variants_share_exactly_the_steps_whose_inputs_agree():
 def test_a_scene_graph_holds_its_steps():
     graph = SceneGraph(kind="test", inputs={"width": 1.0}, steps=(Step.of(rectangle),), default_outputs=("area",))
     assert graph.steps[0].name == "area" and graph.index is None
+
+
+def test_optional_inputs_reach_the_step_only_when_the_graph_has_them():
+    node = Step.of(total, extra=("a",), optional=("b", "a", "first"))
+    assert node.requires == ("first", "a") and node.optional == ("b",)
+    assert node.run({"first": 1.0, "a": 2.0}) == {"total": 3.0}
+    assert node.run({"first": 1.0, "a": 2.0, "b": 4.0}) == {"total": 7.0}
+
+
+def test_step_bindings_are_cached():
+    assert Step.of(rectangle) is Step.of(rectangle)
+    assert Step.of(rectangle, rename={"width": "b"}) is not Step.of(rectangle)

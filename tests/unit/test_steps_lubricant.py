@@ -73,3 +73,18 @@ def test_check_pressure_viscosity():
     assert check_pressure_viscosity(plain, False) is None
     assert check_pressure_viscosity(None, True) is None
     assert check_pressure_viscosity(OIL, True) is None
+
+
+def test_isothermal_lubricant_state_and_the_choice_of_the_lubricant_step():
+    """A lubricant without temperature data (eta0 and alpha given) has its state without a temperature; the
+    scene's lubricant step requires the temperature only when the viscosity depends on it or one is given."""
+    from camcontact.steps.lubricant import isothermal_lubricant_state, lubricant_step
+
+    fixed = cc.Lubricant(eta0="0.05 Pa*s", alpha="2e-8 1/Pa")
+    out = isothermal_lubricant_state(fixed, False)
+    assert_provides(isothermal_lubricant_state, out)
+    assert out["eta0"] == 0.05 and out["alpha"] == 2e-8 and out["density_law"] == "incompressible"
+    assert lubricant_step(fixed, None).requires == ("lubricant", "compressibility")
+    assert lubricant_step(fixed, 353.15).requires == ("lubricant", "temperature", "compressibility")
+    assert lubricant_step(OIL, None).requires == ("lubricant", "temperature", "compressibility")
+    assert lubricant_step(None, None).requires == ("lubricant", "compressibility")  # reported missing: the lubricant
