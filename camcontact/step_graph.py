@@ -158,14 +158,13 @@ class Step:
         ``name`` and ``model`` override the declared step name and model label. Bindings are cached:
         the same arguments give the same node.
         """
+        key = (cls, function, name, tuple(sorted((rename or {}).items())), tuple(extra), tuple(optional),
+               None if provides is None else tuple(provides), model)
         try:
-            return _node(cls, function, name, tuple(sorted((rename or {}).items())), tuple(extra), tuple(optional),
-                         None if provides is None else tuple(provides), model)
-        except TypeError as exc:
-            if "unhashable" not in str(exc):
-                raise
-        return _node.__wrapped__(cls, function, name, tuple(sorted((rename or {}).items())), tuple(extra),
-                                 tuple(optional), None if provides is None else tuple(provides), model)
+            hash(key)
+        except TypeError:  # an unhashable model label: bound, not cached
+            return _node.__wrapped__(*key)
+        return _node(*key)
 
     def label(self, inputs: Mapping[str, Any]) -> tuple[str, str]:
         """(model, version) of the step record, evaluated with the graph ``inputs``."""
@@ -185,7 +184,7 @@ def _node(cls: type[Step], function: Callable, name: str | None, rename_items: t
     if not isinstance(spec, StepSpec):
         raise TypeError(f"{getattr(function, '__qualname__', function)!r} is not a step function (use @step)")
     rename = dict(rename_items)
-    names, takes_extra = _parameters(function)
+    _, takes_extra = _parameters(function)
     call = _bind(function, rename)
     named = {graph for _, graph in call.arguments}
     extra = tuple(name for name in dict.fromkeys(extra) if name not in named)

@@ -72,10 +72,10 @@ def film_steps(film_model: Any, thermal: bool) -> list[Step]:
     films = films_of(film_model)
     isothermal = tuple(f"{q}_isothermal" for q in films)
     basis = "h_min" if "h_min" in films else "h_c"
+    reads = model_reads(film_model)
     steps = [
         Step.of(ehl_groups),
-        Step.of(line_film, provides=(*isothermal, "film_validity"), extra=model_reads(film_model).required,
-                optional=model_reads(film_model).optional),
+        Step.of(line_film, provides=(*isothermal, "film_validity"), extra=reads.required, optional=reads.optional),
         Step.of(thermal_films if thermal else isothermal_films, extra=isothermal, provides=films),
         *(Step.of(film_parameter, name="lambda" if q == basis else f"lambda_{q[2:]}",
                   rename={"h": q, "Lambda": f"Lambda_{q[2:]}"}) for q in films),

@@ -90,14 +90,6 @@ class SlotModel:
             ) from None
 
 
-def _label(model) -> str:
-    return model.name
-
-
-def _version(model) -> str:
-    return model.version
-
-
 def _state(normal_force, u_s, angular_speed, cam_angle, inputs) -> dict:
     state = {"normal_force": normal_force, "u_s": u_s, "angular_speed": angular_speed, "cam_angle": cam_angle,
              **inputs}
@@ -114,7 +106,7 @@ def _check_wear(wear_model) -> None:
 
 
 @step("friction", provides=("friction_force", "friction_coefficient", "friction_power"),
-      model=lambda friction_model: _label(friction_model), version=lambda friction_model: _version(friction_model),
+      model=lambda friction_model: friction_model.name, version=lambda friction_model: friction_model.version,
       check=_check_friction)
 def cam_friction(friction_model, normal_force, u_s, angular_speed, cam_angle, **inputs):
     """Friction force [N], coefficient [-] and power [W] at every cam angle by the slot's friction model
@@ -130,8 +122,8 @@ def cam_friction(friction_model, normal_force, u_s, angular_speed, cam_angle, **
     return {"friction_force": force, "friction_coefficient": mu, "friction_power": power}
 
 
-@step("wear", provides=("wear_rate",), model=lambda wear_model: _label(wear_model),
-      version=lambda wear_model: _version(wear_model), check=_check_wear)
+@step("wear", provides=("wear_rate",), model=lambda wear_model: wear_model.name,
+      version=lambda wear_model: wear_model.version, check=_check_wear)
 def cam_wear(wear_model, normal_force, u_s, angular_speed, cam_angle, **inputs):
     """Wear rate [m^3/s] at every cam angle by the slot's wear model (``inputs``: the state it reads)."""
     produced = wear_model.resolve()(_state(normal_force, u_s, angular_speed, cam_angle, inputs))
