@@ -17,6 +17,14 @@ choice.
     python benchmarks/accuracy_vs_time.py --cam           # the cam cycle: quasi-steady vs transient
     python benchmarks/accuracy_vs_time.py --cam --quick   # 4-degree steps, level 5 (the tests run this)
 
+``--friction`` climbs the friction ladder over the LS-1 flat-follower turn at 1000 rpm — Coulomb, mixed
+lubrication with a Newtonian fluid, Eyring isothermal, mixed + Eyring, + thermal (inlet heating and the
+traction's contact temperature), and the same with the multigrid film — reporting the cycle-mean friction
+power, the energy per turn, the peak coefficient and the cost per angle, into ``accuracy_vs_time_friction.csv``.
+
+    python benchmarks/accuracy_vs_time.py --friction          # 1-degree steps, multigrid level 7
+    python benchmarks/accuracy_vs_time.py --friction --quick  # 4-degree steps, level 5 (the tests run this)
+
 ``--point`` does the same for circular point contacts: the numerical solution on 65^2 .. 513^2
 (levels 3-6; incompressible, Roelands) against the finest level, and the Nijenbanning–Venner–Moes
 and Hamrock–Dowson formulas against it, with the wall time of each, into ``accuracy_vs_time_point.csv``.
@@ -273,6 +281,60 @@ def cam_cycle_rows(step_deg: float, levels, repeats: int) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+#: the friction ladder: (label, effects beyond elasticity/piezoviscosity/compressibility, film model)
+FRICTION_LADDER = (
+    ("coulomb mu 0.05", set(), "pan_hamrock"),
+    ("mixed, newtonian fluid", {"mixed"}, "pan_hamrock"),
+    ("eyring isothermal", {"non_newtonian"}, "pan_hamrock"),
+    ("mixed + eyring isothermal", {"mixed", "non_newtonian"}, "pan_hamrock"),
+    ("mixed + eyring + thermal", {"mixed", "non_newtonian", "thermal"}, "pan_hamrock"),
+    ("mixed + eyring + thermal, multigrid film", {"mixed", "non_newtonian", "thermal"}, "multigrid"),
+)
+
+
+def friction_rows(step_deg: float, level: int, repeats: int) -> pd.DataFrame:
+    """The friction ladder over the LS-1 flat-follower turn at 1000 rpm (steel with thermal data, an oil with
+    beta = 0.03 1/K and k = 0.13 W/(m K)): cycle-mean friction power, energy per turn, peak coefficient and
+    the cost per angle of each rung. The multigrid rung changes the film the fluid shears (the traction is
+    still integrated over the Hertz pressure)."""
+    import attrs
+
+    import camcontact as cc
+    from camcontact.models.film_multigrid import Multigrid
+    from camcontact.scene_file import load_scene
+
+    scene = load_scene().component
+    steel = cc.Material(E="210 GPa", nu=0.3, density="7850 kg/m^3", specific_heat="460 J/kg/K",
+                        thermal_conductivity="47 W/m/K")
+    oil = attrs.evolve(scene.lubricant, thermoviscous_coefficient="0.03 1/K", thermal_conductivity="0.13 W/m/K")
+    flat = attrs.evolve(scene, lubricant=oil, cam=attrs.evolve(scene.cam, material=steel),
+                        follower=cc.Follower.flat(material=steel, roughness="0.2 um"), angle_step=f"{step_deg} deg")
+    base = {"elasticity", "piezoviscosity", "compressibility"}
+    rows = []
+    for label, effects, film in FRICTION_LADDER:
+        model = Multigrid(levels=level, tolerance=1e-5) if film == "multigrid" else film
+        times, result = [], None
+        for _ in range(repeats):
+            start = time.perf_counter()
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                result = cc.Analysis(flat, effects=base | effects, models={"film": model},
+                                     outputs=["cam_angle", "friction_coefficient", "friction_power_mean",
+                                              "friction_energy_per_cycle", "friction_torque_mean"]).run()
+            times.append(time.perf_counter() - start)
+        angles = np.asarray(result["cam_angle"]).size
+        rows.append({"rung": label, "angles": angles, "friction power mean [W]": result["friction_power_mean"],
+                     "energy per turn [J]": result["friction_energy_per_cycle"],
+                     "friction torque mean [N m]": result["friction_torque_mean"],
+                     "peak coefficient": float(np.max(result["friction_coefficient"])),
+                     "median time [s]": statistics.median(times),
+                     "time per angle [ms]": 1e3 * statistics.median(times) / angles})
+    frame = pd.DataFrame(rows)
+    reference = frame["friction power mean [W]"].iloc[-1]
+    frame["power vs last rung [%]"] = 100.0 * (frame["friction power mean [W]"] / reference - 1.0)
+    return frame
+
+
 def main(argv: list[str] | None = None) -> pd.DataFrame:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="2 x 2 points, levels 4..7, one run each")
@@ -282,7 +344,13 @@ def main(argv: list[str] | None = None) -> pd.DataFrame:
     parser.add_argument("--out", default=str(Path(__file__).parent / "results"), help="output folder")
     parser.add_argument("--cam", action="store_true", help="the cam cycle: quasi-steady versus transient films")
     parser.add_argument("--point", action="store_true", help="circular point contacts: formulas versus grid levels")
+    parser.add_argument("--friction", action="store_true", help="the friction ladder over the flat-follower turn")
     args = parser.parse_args(argv)
+    if args.friction:
+        step, level = (4.0, 5) if args.quick else (1.0, 7)
+        frame = friction_rows(step, level, args.repeats or (1 if args.quick else 3))
+        return write_results(frame, args.out, "accuracy_vs_time_friction", lambda f, p: None,
+                             lambda f: f.set_index("rung"))
     if args.point:
         Ms, Ls, levels = ((20,), (10,), (3, 4)) if args.quick else ((10, 20, 50, 100), (5, 10), (3, 4, 5, 6))
         frame = point_rows(Ms, Ls, levels, args.repeats or (1 if args.quick else 3))

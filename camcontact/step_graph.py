@@ -39,7 +39,8 @@ __all__ = ["EFFECTS", "SceneGraph", "Step", "StepRecord", "add_scene_loader", "b
            "scene_builder", "scene_builders", "step"]
 
 #: Physical effects a scene may switch on (each scene supports a subset).
-EFFECTS = ("elasticity", "piezoviscosity", "compressibility", "thermal", "dynamics", "squeeze", "spin")
+EFFECTS = ("elasticity", "piezoviscosity", "compressibility", "thermal", "dynamics", "squeeze", "spin", "mixed",
+           "non_newtonian")
 
 
 @attrs.frozen

@@ -61,7 +61,8 @@ def pellet_mill_contact(lubricant, material=annealed):
 # T_maxL = 130.5 °C) for NH1 11-572.
 
 # %%
-columns = ["b", "p_h", "tau_max", "z_tau_max", "temperature", "kinematic_viscosity", "alpha", "u_raceway",
+columns = ["b", "p_h", "tau_max", "z_tau_max", "roughness_amplitude", "tau_roughness", "p_full_contact_roughness",
+           "temperature", "kinematic_viscosity", "alpha", "u_raceway",
            "u_roller", "h_c", "thermal_factor", "h_c_corrected", "Lambda_oc", "regime", "friction_coefficient",
            "flash_temperature", "surface_temperature_max", "lubricant_temperature_max",
            "lubricant_temperature_check", "yield_check", "fatigue_check"]
@@ -83,8 +84,15 @@ print(side_by_side.to_string())
 # and the thicker old grease gives the *better* film. With the thesis's annealed yield strength the
 # Tresca check even reports yielding: the material data, not the lubricant, need attention first.
 #
-# The corrected friction is NaN on purpose (`friction_validity` says why): Kelley's correlation is for
-# sliding contacts. A `slide_roll_ratio` on the contact imposes slip on the pure-rolling speeds.
+# The roughness stress: the thesis reads the amplitude of the roughness sinusoid as sigma/sqrt 2
+# (0.23 µm, its Eq. 30) and gets 1.59 GPa; a sinusoid of RMS sigma has the amplitude sqrt 2 sigma
+# (0.46 µm), and the corrected row gives 3.02 GPa. Johnson's full-contact pressure of that sinusoid,
+# pi E* A / lambda = 1.80 GPa, is more than twice the Hertz pressure: the contact does not flatten the
+# roughness, in line with the mixed regime.
+#
+# The corrected friction is NaN on purpose (`friction_validity` says why, `friction_valid` is False):
+# Kelley's correlation is for sliding contacts. A `slide_roll_ratio` on the contact imposes slip on
+# the pure-rolling speeds.
 
 # %%
 result = cc.Analysis(pellet_mill_contact(greases["NH1 11-572"]), models={"convention": ["thesis", "corrected"]}).run()
@@ -130,6 +138,7 @@ bearing = cc.SphericalRollerBearing(
     roller_diameter="27 mm", roller_length="41.35 mm", contact_angle="10 deg",  # assumed
     C="1700 kN", C0="2120 kN", fatigue_load_limit="190 kN",  # C and P_u assumed; C0 from the thesis
     radial_clearance="0.1 mm", material=hardened, roughness="0.23 um",  # clearance assumed
+    series="240",  # SKF dimension series: the SKF frictional moment needs it
 )
 # the radial load that puts the thesis's 10 kN on the most loaded roller (bisection on Q_max)
 radial = brentq(lambda F: bearing.load_distribution_si(F).Q_max - 10e3, 10e3, 500e3, xtol=1.0)
@@ -155,13 +164,21 @@ print(pd.concat(reports).T.to_string())
 
 # %% [markdown]
 # With 0.1 mm clearance about 68 kN puts the thesis's 10 kN on the most loaded roller: ten rollers
-# (five per row, +-28.8°) carry it. The films from the Pan–Hamrock formula put those contacts in the
-# mixed regime (Lambda about 1.9 for 11-572, 1.5 for 94-402), yet ISO 281 gives kappa = 3.2 and 2.5
-# and a rating life of millions of hours: at C/P = 25 the thesis's assumed load cannot explain
-# bearings that fail within months. The load is the open question (the thesis proposes FEM for it);
-# the life against the radial load shows how far it has to rise before life becomes an issue.
+# (five per row, the last at +-28.8°) carry it, inside Harris's load zone arccos(P_d / 2 delta_r) =
+# +-40.6° (`load_zone`; `last_loaded_azimuth` is the 28.8°). The films from the Pan–Hamrock formula
+# put those contacts in the mixed regime (Lambda about 1.9 for 11-572, 1.5 for 94-402), yet ISO 281
+# gives kappa = 3.2 and 2.5 and a rating life of millions of hours: at C/P = 25 the thesis's assumed
+# load cannot explain bearings that fail within months. The load is the open question (the thesis
+# proposes FEM for it); the life against the radial load shows how far it has to rise before life
+# becomes an issue.
 # (`slide_roll_ratio=0.02` is an assumed 2 % slip for the friction power and flash temperatures;
 # the load distribution, films and life do not depend on it.)
+#
+# The summary also gives the bearing's frictional moment and power by the SKF model (catalogue
+# "Rolling bearings", series 240 constants) and by Palmgren's M0 + M1 side by side: 14.0-14.6 N m
+# (440-460 W at 300 rpm) with NH1 94-402 and 15.1-15.9 N m (470-500 W) with the more viscous 11-572,
+# an equivalent friction coefficient 2M/(F_r d) of about 0.002, the catalogue value for spherical
+# roller bearings; they do not depend on the assumed slip.
 
 # %%
 loads = np.geomspace(50e3, 1500e3, 12)

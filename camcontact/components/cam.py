@@ -17,7 +17,10 @@ from ..errors import InputError
 from ..units import Component, Quantity, in_range, instance_of, non_negative, number_field, positive, quantity_field
 from .material import Material
 
-__all__ = ["Cam", "Follower", "ValveTrain"]
+__all__ = ["STEEL_DENSITY", "Cam", "Follower", "ValveTrain"]
+
+#: density assumed for a roller whose material gives none [kg/m^3] (carbon and bearing steels 7800-7850)
+STEEL_DENSITY = 7850.0
 
 
 def _motion_program(instance, attribute, value):
@@ -74,6 +77,20 @@ class Follower(Component):
         Design limit of the pressure angle (default 30°, Tsuha 2015 §2.1 after Uicker et al.).
     roughness : Quantity or str, optional
         RMS roughness [length].
+    roller_width : Quantity or str, optional
+        Width of the roller [length] (> 0; roller only), for its inertia; default: the cam's width.
+    roller_inertia : Quantity or str, optional
+        Polar moment of inertia of the roller about its pin [mass*length²] (> 0; roller only); default: a
+        solid cylinder, (π/2) ρ w R_f⁴, of the follower material's density (7850 kg/m³, steel, when the
+        material gives none).
+    pin_radius : Quantity or str, optional
+        Radius of the pin (the roller's bearing seat) [length] (0 < r_pin < R_f; roller only); default
+        0.4 R_f (a needle bearing on a pin of 40 % of the roller's diameter, typical proportions of
+        automotive roller lifters; an assumption — give the design's value).
+    pin_friction_coefficient : float
+        Friction coefficient of the pin bearing referred to the pin radius (0 <= μ_pin <= 0.3; roller only):
+        torque μ_pin N r_pin. Default 0.0025, the constant friction coefficient of needle roller bearings
+        with a cage in the SKF general catalogue (friction, table of μ); a plain bush runs about 0.05–0.15.
     name : str
     """
 
@@ -86,14 +103,23 @@ class Follower(Component):
         "[angle]", default="30 deg", validators=[in_range(0.0, math.pi / 2, lower_inclusive=False, unit="rad")]
     )
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
+    roller_width: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    roller_inertia: Quantity = quantity_field("[mass]*[length]**2", optional=True, validators=[positive("kg*m^2")])
+    pin_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    pin_friction_coefficient: float = number_field(default=0.0025, validators=[in_range(0.0, 0.3)])
 
     def __attrs_post_init__(self) -> None:
         where = f"Follower {self.name!r}"
         if self.kind == "roller" and self.roller_radius is None:
             raise InputError(f"{where}: kind='roller' needs roller_radius")
+        if self.kind == "roller" and self.pin_radius is not None and not self.si.pin_radius < self.si.roller_radius:
+            raise InputError(f"{where}: pin_radius = {self.pin_radius} must be smaller than roller_radius = "
+                             f"{self.roller_radius}")
         if self.kind == "flat":
-            if self.roller_radius is not None:
-                raise InputError(f"{where}: a flat-faced follower has no roller_radius (got {self.roller_radius})")
+            given = [n for n in ("roller_radius", "roller_width", "roller_inertia", "pin_radius")
+                     if getattr(self, n) is not None]
+            if given:
+                raise InputError(f"{where}: a flat-faced follower has no {given[0]} (got {getattr(self, given[0])})")
             if self.si.offset != 0.0:
                 raise InputError(
                     f"{where}: offset = {self.offset} has no effect on a flat-faced follower's kinematics; "
@@ -104,6 +130,26 @@ class Follower(Component):
     def roller(cls, *, radius, material: Material, offset="0 mm", **kwargs) -> Follower:
         """An offset roller follower of roller radius ``radius``."""
         return cls(kind="roller", roller_radius=radius, offset=offset, material=material, **kwargs)
+
+    def roller_inertia_si(self, cam_width: float) -> float:
+        """The roller's polar moment of inertia [kg m^2]: ``roller_inertia``, else a solid cylinder of
+        ``roller_width`` (default ``cam_width`` [m]) and the material's density (7850 kg/m^3 without one)."""
+        if self.kind != "roller":
+            raise InputError(f"Follower {self.name!r} is flat-faced: it has no roller inertia")
+        if self.roller_inertia is not None:
+            return self.si.roller_inertia
+        from ..dynamics.roller_follower import solid_roller_inertia
+
+        width = self.si.roller_width if self.roller_width is not None else cam_width
+        density = self.material.si.density if self.material.density is not None else STEEL_DENSITY
+        return solid_roller_inertia(self.si.roller_radius, width, density)
+
+    @property
+    def pin_radius_si(self) -> float:
+        """The pin radius [m]: ``pin_radius``, else 0.4 R_f."""
+        if self.kind != "roller":
+            raise InputError(f"Follower {self.name!r} is flat-faced: it has no pin")
+        return self.si.pin_radius if self.pin_radius is not None else 0.4 * self.si.roller_radius
 
     @classmethod
     def flat(cls, *, material: Material, **kwargs) -> Follower:

@@ -56,6 +56,13 @@ class CamFollower(Component):
         material's hardness).
     cycles : int
         Cam revolutions integrated by the ``dynamics`` effect (the last one is reported; default 3).
+    asperity_density : Quantity or str, optional
+        Summit density η of the pair's composite roughness [1/length²] (> 0), for the ``mixed`` effect
+        (Greenwood–Tripp); default: η β σ = 0.05 with the composite σ.
+    asperity_radius : Quantity or str, optional
+        Summit radius β [length] (> 0) for ``mixed``; default: σ/β = 0.05. Both defaults are orders of
+        magnitude of ground steel surfaces as Stribeck-curve models use them (Gelinck & Schipper 2000),
+        not data: give measured values where known (:mod:`camcontact.contact.asperity_contact`).
     name : str
     """
 
@@ -76,6 +83,8 @@ class CamFollower(Component):
     friction_coefficient: float = number_field(optional=True, validators=[in_range(0.0, 1.0)])
     wear_coefficient: float = number_field(optional=True, validators=[in_range(0.0, lower_inclusive=False)])
     cycles: int = attrs.field(default=3)
+    asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
+    asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
     @convention.validator
     def _check_convention(self, attribute, value):

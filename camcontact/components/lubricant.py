@@ -167,6 +167,24 @@ class Lubricant(Component):
         [W/(m K)], needed by the ``thermal`` effect.
     specific_heat : Quantity or str, optional
         [J/(kg K)].
+    eyring_stress : Quantity or str, optional
+        Eyring stress τ0 [pressure] (> 0) of the film's rheology (Johnson & Tevaarwerk 1977), used by the
+        ``non_newtonian`` effect; default: the traction model's (5 MPa, a mineral-oil order of magnitude).
+    limiting_shear_stress : Quantity or str, optional
+        τ_L0 [pressure] (>= 0) of the limiting shear stress τ_L = τ_L0 + Λ_L p (Bair & Winer 1979);
+        default: the traction model's (0).
+    limiting_shear_slope : float, optional
+        Λ_L [-] (0 <= Λ_L <= 0.3); default: the traction model's (0.075).
+    boundary_friction : float
+        Friction coefficient of the asperity contacts under this lubricant's boundary films, for the
+        ``mixed`` effect (0 <= μ_b <= 1). Default 0.12: measured asperity friction of steel line contacts
+        in oil, 0.12–0.135 (Masjedi & Khonsari 2014, Tribol. Int. 70:179), ZDDP tribofilms 0.09–0.14
+        (Zhang, Ueda, Campen & Spikes 2021, Tribol. Lett. 69).
+    thermoviscous_coefficient : Quantity or str, optional
+        Temperature–viscosity coefficient β = −d ln η/dT [1/temperature] (> 0) of a lubricant given without
+        a viscosity–temperature law (``eta0``, or Roelands' consistency relation), for the ``thermal``
+        effect; with temperature data the law's β is used (giving both is an error). Mineral oils: about
+        0.02–0.05 1/K near 40–100 °C.
     form : str
         ``"oil"`` (default) or ``"grease"``: a grease is described by its base oil's data; the
         form sets the starvation factor of the corrected film (0.7 for grease, Delabenetta 2021
@@ -216,12 +234,21 @@ class Lubricant(Component):
     specific_heat: Quantity = quantity_field(
         "[energy]/[mass]/[temperature]", optional=True, validators=[positive("J/(kg K)")]
     )
+    eyring_stress: Quantity = quantity_field("[pressure]", optional=True, validators=[positive("Pa")])
+    limiting_shear_stress: Quantity = quantity_field("[pressure]", optional=True, validators=[non_negative("Pa")])
+    limiting_shear_slope: float = number_field(optional=True, validators=[in_range(0.0, 0.3)])
+    boundary_friction: float = number_field(default=0.12, validators=[in_range(0.0, 1.0)])
+    thermoviscous_coefficient: Quantity = quantity_field("1/[temperature]", optional=True,
+                                                         validators=[positive("1/K")])
     form: str = attrs.field(default="oil", validator=one_of("oil", "grease"))
     upper_temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
 
     # ------------------------------------------------------------------ validation
     def __attrs_post_init__(self) -> None:
         where = f"Lubricant {self.name!r}"
+        if self.thermoviscous_coefficient is not None and self._points() is not None:
+            raise InputError(f"{where}: thermoviscous_coefficient = {format_quantity(self.thermoviscous_coefficient)} "
+                             "is given with viscosity–temperature data, whose law gives β; drop one of them")
         self._law("viscosity_pressure_law", "pressure")
         self._law("viscosity_temperature_law", "temperature")
         registry.get_class("density_laws", self.density_law)
@@ -329,7 +356,8 @@ class Lubricant(Component):
         pressure_law = registry.get("viscosity_laws", self.viscosity_pressure_law)
         density_law = registry.get("density_laws", self.density_law)
         law = self.temperature_law
-        kinematic = beta = None
+        kinematic = None
+        beta = self.si.thermoviscous_coefficient
         density = self.si.density
         if law is not None:
             if temperature is None:

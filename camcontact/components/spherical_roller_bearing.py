@@ -38,6 +38,14 @@ def _count(lower: int, upper: int | None = None):
     return _validate
 
 
+def _series(instance, attribute, value):
+    from ..models.bearing_friction import SKF_SERIES
+
+    if value is not None and value not in SKF_SERIES:
+        raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}; allowed: {', '.join(SKF_SERIES)} "
+                         "(the series of the SKF friction model's geometry constants)")
+
+
 @attrs.frozen(kw_only=True)
 class SphericalRollerBearing(Component):
     """A spherical roller bearing from catalogue data.
@@ -61,7 +69,9 @@ class SphericalRollerBearing(Component):
     fatigue_load_limit : Quantity or str, optional
         P_u [force] (for a_ISO).
     radial_clearance : Quantity or str
-        Radial internal clearance c_r [length] (default 0; negative = interference/preload).
+        Radial internal clearance c_r [length] (default 0; negative = interference/preload): the total
+        radial play of one ring against the other, i.e. the diametral clearance P_d of Harris &
+        Kotzalas (ch. 7), which sets the load zone psi_l = arccos(P_d / (2 delta_r)).
     rows : int
         1 or 2 (default 2).
     row_offset : Quantity or str
@@ -70,6 +80,10 @@ class SphericalRollerBearing(Component):
         Rings and rollers (needed for Hertz contact and subsurface stresses).
     roughness : Quantity or str, optional
         RMS roughness of each surface [length] (composite = sqrt(2) times it).
+    series : str, optional
+        Dimension series as the SKF friction model names it (e.g. "240" for a 24040 CC/W33, "222 E" for a
+        22220 E); one of :data:`camcontact.models.bearing_friction.SKF_SERIES`. Needed by the SKF
+        frictional moment only.
     name : str
     """
 
@@ -92,6 +106,7 @@ class SphericalRollerBearing(Component):
     row_offset: Quantity = quantity_field(ANGLE, default="0 deg")
     material: Material | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Material)))
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
+    series: str | None = attrs.field(default=None, validator=_series)
 
     def __attrs_post_init__(self) -> None:
         si, where = self.si, f"SphericalRollerBearing {self.designation!r}"

@@ -18,6 +18,24 @@ Pi = sum_jk K_n max(delta_jk, 0)^(19/9) / (19/9) - F_r delta_r - F_a delta_a by 
 backtracking, so the solution is unique and reached from any start; the record gives the force
 residual per iteration.
 
+Load zone. Harris & Kotzalas (Vol. 1, ch. 7, radially loaded bearings with clearance) write the
+approach of a roller as delta_psi = delta_r cos(psi) - P_d / 2 with the diametral clearance P_d, so
+the loaded arc ends where it vanishes, at the load-zone half-angle
+
+    psi_l = arccos(P_d / (2 delta_r)).
+
+c_r here is that P_d (ISO's radial internal clearance is the total radial play of one ring against
+the other). With the contact angle alpha both the ring displacement and the clearance project onto
+the contact normal with cos(alpha), which cancels; an axial displacement adds s_k delta_a sin(alpha)
+per row (Harris & Kotzalas ch. 7, combined radial and axial load), so per row k
+
+    cos(psi_l,k) = (c_r / 2 - s_k delta_a tan(alpha)) / delta_r,
+
+clipped to [-1, 1] (psi_l = pi: the whole row loaded; 0: the row unloaded; with delta_r = 0 a row is
+either wholly loaded or not). For a pure radial load (delta_a = 0) this is Harris's psi_l. It is the
+continuous boundary of the loaded arc: the last loaded roller sits at or inside it
+(:attr:`LoadDistribution.last_loaded_azimuth`), the next roller outside.
+
 References: Harris & Kotzalas (2007) Rolling Bearing Analysis, ch. 7 (load distribution, the
 load-deflection law Q = K delta^(10/9) for line contact); Stribeck's Q_max = 4.08 F_r/(Z cos alpha)
 for line contact and zero clearance (NSK catalogue E728 §5.1; tested against the exact discrete
@@ -58,7 +76,8 @@ class LoadDistribution:
 
     ``Q`` [N] and ``approach`` [m] have shape (rows, Z); ``azimuth`` [rad] shape (Z,) per row
     (``azimuths`` (rows, Z) with a row offset); ``delta_r``, ``delta_a`` [m] the inner ring's
-    displacements; ``residual`` the relative force imbalance; ``iterations`` Newton steps.
+    displacements; ``residual`` the relative force imbalance; ``iterations`` Newton steps;
+    ``clearance`` the radial internal clearance c_r = P_d [m] the loads were solved with.
     """
 
     Q: np.ndarray = attrs.field(repr=False, eq=False)
@@ -73,6 +92,7 @@ class LoadDistribution:
     residual: float
     iterations: int
     residuals: tuple = attrs.field(repr=False, eq=False)
+    clearance: float = 0.0
 
     @property
     def Q_max(self) -> float:
@@ -86,7 +106,25 @@ class LoadDistribution:
 
     @property
     def load_zone(self) -> np.ndarray:
-        """Half-angle of the loaded arc per row [rad] (0: row unloaded; pi: all rollers loaded)."""
+        """Load-zone half-angle psi_l per row [rad] (Harris & Kotzalas ch. 7; module docstring):
+        arccos((c_r / 2 - s_k delta_a tan(alpha)) / delta_r), = arccos(P_d / (2 delta_r)) under a
+        radial load; 0: row unloaded, pi: the whole row loaded."""
+        out = np.zeros(self.Q.shape[0])
+        if not np.any(self.Q > 0.0):
+            return out
+        for k, sign in enumerate(self.row_sign):
+            # approach / cos(alpha) = delta_r cos(psi) + offset: loaded where it is positive
+            offset = sign * self.delta_a * math.tan(self.alpha) - 0.5 * self.clearance
+            if self.delta_r > 0.0:
+                out[k] = math.acos(min(1.0, max(-1.0, -offset / self.delta_r)))
+            else:
+                out[k] = math.pi if offset > 0.0 else 0.0
+        return out
+
+    @property
+    def last_loaded_azimuth(self) -> np.ndarray:
+        """Angle of the last loaded roller from the load line per row [rad] (0: row unloaded); with
+        discrete rollers it lies at or inside :attr:`load_zone`."""
         out = np.zeros(self.Q.shape[0])
         for k in range(self.Q.shape[0]):
             angles = np.abs(np.angle(np.exp(1j * self.azimuths[k][self.Q[k] > 0.0])))
@@ -200,7 +238,7 @@ def solve_load_distribution(
     if Fr == 0.0 and Fa == 0.0:
         x = np.zeros(2)
         approach, Q, _ = state(x)
-        return _result(Q * 0.0, approach, azimuths, row_sign, alpha, x, Fr, Fa, 0.0, 0, ())
+        return _result(Q * 0.0, approach, azimuths, row_sign, alpha, x, Fr, Fa, 0.0, 0, (), clearance)
     # start: the rigid play taken up plus a Stribeck-sized elastic approach
     per_roller = max(Fr / (0.25 * rows * Z * max(c, 1e-3)), abs(Fa) / (0.5 * Z * max(s, 1e-3)), 1e-9)
     elastic = (per_roller / stiffness) ** (1.0 / EXPONENT)
@@ -218,7 +256,7 @@ def solve_load_distribution(
         residuals.append(residual)
         if residual < tolerance:
             return _result(Q, approach, azimuths, row_sign, alpha, x, Fr, Fa, residual, iteration - 1,
-                           tuple(residuals))
+                           tuple(residuals), clearance)
         active = approach > 0.0
         weights = stiffness * EXPONENT * np.where(active, np.maximum(approach, 0.0), 0.0) ** (EXPONENT - 1.0)
         H = (A * weights[:, None]).T @ A
@@ -246,7 +284,7 @@ def solve_load_distribution(
         if len(residuals) > 5 and min(residuals[-5:]) >= min(residuals[:-5]) and residual < math.sqrt(tolerance):
             # no progress for five steps: the imbalance is at the rounding level of the approaches
             return _result(Q, approach, azimuths, row_sign, alpha, x, Fr, Fa, residual, iteration - 1,
-                           tuple(residuals))
+                           tuple(residuals), clearance)
         x = x + t * step
         approach, Q, g = state(x)
     raise ConvergenceError(
@@ -255,9 +293,10 @@ def solve_load_distribution(
     )
 
 
-def _result(Q, approach, azimuths, row_sign, alpha, x, Fr, Fa, residual, iterations, residuals) -> LoadDistribution:
+def _result(Q, approach, azimuths, row_sign, alpha, x, Fr, Fa, residual, iterations, residuals,
+            clearance) -> LoadDistribution:
     shape = azimuths.shape
     return LoadDistribution(Q=Q.reshape(shape), approach=approach.reshape(shape), azimuths=azimuths,
                             row_sign=row_sign, alpha=alpha, delta_r=float(x[0]), delta_a=float(x[1]),
                             radial_load=Fr, axial_load=Fa, residual=residual, iterations=iterations,
-                            residuals=residuals)
+                            residuals=residuals, clearance=float(clearance))

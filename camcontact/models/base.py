@@ -32,6 +32,7 @@ from ..errors import InputError, UnknownModelError
 __all__ = [
     "BUILTIN_MARK",
     "FAMILIES",
+    "BearingFrictionModel",
     "DensityLaw",
     "FilmModel",
     "FrictionModel",
@@ -251,6 +252,17 @@ class TractionModel(Model):
     family = "traction_models"
 
 
+class BearingFrictionModel(Model):
+    """Family ``bearing_friction_models``: frictional moment of a whole rolling bearing.
+
+    ``provides`` includes ``"friction_moment"`` [N m] (and its parts, in N m); inputs are the bearing's
+    loads [N], the relative speed of its rings ``speed`` [rev/s], ``kinematic_viscosity`` [m^2/s] and
+    its size [m].
+    """
+
+    family = "bearing_friction_models"
+
+
 class MotionLaw(Model):
     """Family ``motion_laws``: a normalised cam motion law on x in [0, 1].
 
@@ -280,6 +292,7 @@ FAMILIES: dict[str, type[Model]] = {
     "wear_models": WearModel,
     "life_models": LifeModel,
     "traction_models": TractionModel,
+    "bearing_friction_models": BearingFrictionModel,
 }
 
 

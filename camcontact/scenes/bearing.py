@@ -4,7 +4,9 @@ A :class:`~camcontact.components.LoadedBearing` becomes the steps
 
 ``load_distribution``
     roller loads Q under F_r, F_a with the radial clearance (numerical, ISO/TS 16281 style,
-    :mod:`camcontact.contact.load_distribution`);
+    :mod:`camcontact.contact.load_distribution`), the number of loaded rollers, the load-zone
+    half-angle psi_l = arccos(P_d / (2 delta_r)) (Harris & Kotzalas ch. 7) and the azimuth of the
+    last loaded roller;
 ``kinematics``
     pure rolling: cage speed n_c = [n_i (1 - gamma) + n_o (1 + gamma)]/2, roller speed about its
     axis (d_m / 2 D_w)(1 - gamma^2)|n_i - n_o| and the entrainment speed of both raceway contacts
@@ -20,8 +22,16 @@ A :class:`~camcontact.components.LoadedBearing` becomes the steps
     default ``"pan_hamrock"``, or ``"multigrid"``), Lambda with the bearing's roughness, regime;
 ``friction``
     Benedict-Kelley friction at both raceway contacts of every loaded roller with the scene's
-    slide/roll ratio (Delabenetta 2021 Eq. 49), the flash temperature of each contact (Eq. 48) and
-    the bearing's sliding friction power sum(mu Q |u1 - u2|);
+    slide/roll ratio (Delabenetta 2021 Eq. 49), whether each contact lies inside the correlation's
+    validity (``friction_valid_inner`` / ``_outer``, with the reason in ``friction_validity``), the
+    flash temperature of each contact (Eq. 48) and the bearing's sliding friction power
+    sum(mu Q |u1 - u2|);
+``friction_moment_skf``, ``friction_moment_palmgren``, ``rolling_resistance``
+    the bearing's frictional moment and power by the SKF model (SKF "Rolling bearings" 2012, needs
+    ``SphericalRollerBearing.series``) and by Palmgren's M0 + M1, side by side, from the loads, the
+    relative ring speed and the lubricant's kinematic viscosity; the hydrodynamic rolling resistance of
+    every loaded contact (Goksem & Hargreaves 1978) and its moment and power
+    (:mod:`camcontact.steps.bearing_friction`);
 ``equivalent_load``, ``rating_life``, ``modified_life``
     ISO 281: P, L10 and L10h; L_nm with a1, kappa and a_ISO (model slot ``life``, default
     ``"iso281"``; needs the lubricant, the fatigue load limit and the contamination factor).
@@ -42,7 +52,9 @@ import numpy as np
 from ..components.loaded_bearing import LoadedBearing
 from ..contact.geometry import reduced_modulus
 from ..errors import InputError
+from ..models.bearing_friction import SKF_SERIES
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
+from ..steps.bearing_friction import palmgren_friction_moment, roller_rolling_resistance, skf_friction_moment
 from ..steps.contact import RACES, roller_hertz
 from ..steps.film import bearing_lubrication, film_parameter, films_of, resolve_film_model, roller_films
 from ..steps.forces import load_distribution
@@ -59,15 +71,18 @@ SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"
 DEFAULT_EFFECTS = SUPPORTED_EFFECTS
 PER_ROLLER = frozenset({
     "roller_row", "azimuth", "Q", "roller_approach",
-    *(f"{q}_{race}" for q in ("b", "p_h", "h_c", "h_min", "Lambda", "friction_coefficient", "flash_temperature")
+    *(f"{q}_{race}" for q in ("b", "p_h", "h_c", "h_min", "Lambda", "friction_coefficient", "friction_valid",
+                              "flash_temperature", "rolling_resistance")
       for race in RACES), "contact_regime",
 })
 DEFAULT_OUTPUTS = (
     "roller_row", "azimuth", "Q", "b_inner", "p_h_inner", "b_outer", "p_h_outer", "h_min_inner", "h_min_outer",
     "Lambda_inner", "Lambda_outer", "contact_regime", "friction_coefficient_inner", "friction_coefficient_outer",
-    "flash_temperature_inner", "flash_temperature_outer",
-    "Q_max", "loaded_rollers", "load_zone", "delta_r", "delta_a", "p_h_max", "tau_max", "z_tau_max",
-    "cage_speed", "u_m", "h_min_bearing", "Lambda_bearing", "friction_power", "P", "L10", "L10h", "kappa", "a_ISO", "L_nm", "L_nmh",
+    "friction_valid_inner", "friction_valid_outer", "flash_temperature_inner", "flash_temperature_outer",
+    "Q_max", "loaded_rollers", "load_zone", "last_loaded_azimuth", "delta_r", "delta_a", "p_h_max", "tau_max",
+    "z_tau_max", "cage_speed", "u_m", "h_min_bearing", "Lambda_bearing", "friction_power", "friction_validity", "P",
+    "L10", "L10h", "kappa", "a_ISO", "L_nm", "L_nmh",
+    "friction_moment_skf", "friction_power_skf", "friction_moment_palmgren", "friction_power_palmgren",
 )
 HINTS = {
     "lubricant": "set LoadedBearing.lubricant",
@@ -78,6 +93,10 @@ HINTS = {
     "contamination": "set LoadedBearing.contamination (ISO 281 factor e_C, 0 < e_C <= 1)",
     "slide_roll_ratio": "set LoadedBearing.slide_roll_ratio (the Kelley correlation needs sliding)",
     "effusivity": "give the bearing material density, specific_heat and thermal_conductivity",
+    "bearing_series": f"set SphericalRollerBearing.series, which the SKF friction model needs (one of "
+                      f"{', '.join(SKF_SERIES)}; e.g. '240' for a 24040)",
+    "lubrication": "set LoadedBearing.lubricant (its form, grease or oil, sets the lubrication method)",
+    "base_oil": "set LoadedBearing.lubricant (its base oil sets the SKF model's mu_EHL)",
 }
 
 
@@ -93,6 +112,7 @@ def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
         "reliability": scene.reliability, "C": b_si.C, "contact_angle": b_si.contact_angle,
         "gamma": bearing.gamma, "pitch_diameter": bearing.d_m, "roller_diameter": b_si.roller_diameter,
         "contact_radii": bearing.contact_radii, "roller_length": b_si.roller_length,
+        "bore": b_si.bore, "outer_diameter": b_si.outer_diameter,
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": "compressibility" in effects,
         **lubricant_inputs(scene.lubricant, scene.si.temperature),
     }
@@ -105,7 +125,19 @@ def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
         except InputError:
             pass  # only the flash temperature needs it: named up front if asked for
     return inputs | given(sigma=b_si.roughness, fatigue_load_limit=b_si.fatigue_load_limit,
-                          contamination=scene.contamination, slide_roll_ratio=scene.slide_roll_ratio)
+                          contamination=scene.contamination, slide_roll_ratio=scene.slide_roll_ratio,
+                          bearing_series=bearing.series, lubrication=getattr(scene.lubricant, "form", None),
+                          base_oil=getattr(scene.lubricant, "base_oil", None))
+
+
+def moment_steps(scene: LoadedBearing) -> list[Step]:
+    """The SKF and Palmgren frictional-moment steps when the lubricant gives its kinematic viscosity at the
+    scene's temperature (it needs a density or kinematic data); without it the moments are not offered."""
+    try:
+        known = scene.lubricant is not None and scene.lubricant.state(scene.si.temperature).kinematic_viscosity
+    except InputError:
+        known = False
+    return [Step.of(skf_friction_moment), Step.of(palmgren_friction_moment)] if known else []
 
 
 @scene_builder(LoadedBearing)
@@ -125,7 +157,7 @@ def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: f
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{race}"})
           for race in RACES),
         Step.of(bearing_lubrication), Step.of(roller_friction), Step.of(bearing_equivalent_load),
-        Step.of(rating_life), Step.of(modified_rating_life),
+        Step.of(rating_life), Step.of(modified_rating_life), *moment_steps(scene), Step.of(roller_rolling_resistance),
     ]
     inputs = {**bearing_inputs(scene, effects), "film_model": film_model, "life_model": models.get("life", "iso281")}
     per_index = frozenset(PER_ROLLER & {o for step in steps for o in step.provides})

@@ -7,7 +7,9 @@ no lubricant and no film.
 
 Model slots (``Analysis(models=...)``): ``film`` (any line film model, formula or
 ``"multigrid"``, warm-started from the previous angle; default ``"pan_hamrock"``), ``friction``
-(``friction_models``; default ``"coulomb"``), ``wear`` (``wear_models``; default ``"archard"``).
+(``friction_models``; default: a roller's spin dynamics with its traction limited to mu N — the tangential
+force accelerates the roller and overcomes its pin friction, :mod:`camcontact.steps.roller` — and
+``"coulomb"`` for a flat-faced follower; a model chosen here applies to either), ``wear`` (``wear_models``; default ``"archard"``).
 
 Effects: ``elasticity``, ``piezoviscosity``, ``compressibility`` (on by default), ``dynamics``
 (off by default: the contact force is the prescribed-motion 1-DOF force of Tsuha 2015 Eq. 3.46;
@@ -16,7 +18,10 @@ unilateral contact and the last turn is reported) and ``squeeze`` (off by defaul
 quasi-steady, angle by angle; on: the numerical film — film model ``"multigrid"`` — is solved as one
 transient over the turn with the squeeze term, implicit BDF2 steps from angle to angle through any
 entrainment reversal, :func:`camcontact.ehl.line_transient.transient_cycle`; it starts from the
-steady film at the steadiest angle, e.g. on the base circle).
+steady film at the steadiest angle, e.g. on the base circle) and ``thermal`` (off by default: the films are
+reduced by the inlet shear-heating factor phi_T of the model slot ``thermal``, default ``"wilson_sheu"``
+with its slide-to-roll term, :func:`camcontact.models.film_thermal.thermal_reduction`; needs the
+lubricant's thermal conductivity and its temperature–viscosity coefficient).
 """
 
 from __future__ import annotations
@@ -28,33 +33,41 @@ from ..components.cam_follower import CamFollower
 from ..contact.geometry import reduced_modulus
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import cycle_hertz
-from ..steps.film import film_parameter, films_of, resolve_film_model
-from ..steps.film_cycle import cycle_ehl_groups, numerical_film_details, quasi_steady_films, transient_films
+from ..steps.film import film_parameter, films_of, resolve_film_model, thermal_films
+from ..steps.film_cycle import (cycle_ehl_groups, cycle_inlet_thermal, numerical_film_details, quasi_steady_films,
+                                transient_films)
 from ..steps.forces import (FORCES_1DOF, jump_report, lumped_dynamics, minimum_spring_stiffness, normal_force,
                             prescribed_motion_forces, valve_train_natural_frequency)
-from ..steps.friction import SlotModel, cam_friction, cam_wear
+from ..steps.friction import SlotModel, cam_wear
 from ..steps.kinematics import FOLLOWER_KINEMATICS, follower_motion, motion_continuity
 from ..steps.lubricant import lubricant_inputs, lubricant_step
-from ..steps.summaries import (friction_power_mean, h_min_cycle, jump_margin, peak_contact_force, peak_pressure,
-                               wear_rate_mean)
+from ..steps.roller import ROLLER_OUTPUTS
+from .cam_follower_friction import friction_inputs, friction_steps, traction_model
+from ..steps.summaries import (friction_power_mean, friction_torque_mean, h_min_cycle, jump_margin,
+                               peak_contact_force, peak_pressure, wear_rate_mean)
 from .cam_follower_plots import plot_cam_follower
 
 __all__ = ["DEFAULT_EFFECTS", "SUPPORTED_EFFECTS", "build_cam_follower", "cam_follower_inputs"]
 
-SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "dynamics", "squeeze"})
+SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "dynamics", "squeeze", "thermal",
+                               "mixed", "non_newtonian"})
 DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
-DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard"}
+DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard", "thermal": "wilson_sheu",
+                  "traction": None}
 PER_ANGLE = frozenset((
     "cam_angle", *FOLLOWER_KINEMATICS, *FORCES_1DOF, "normal_force", "w", "b", "p_h", "approach", "U", "G", "W", "M",
-    "L", "h_c", "h_min", "film_regime", "H0", "H_min", "H_c", "spike_pressure", "Lambda_min", "friction_force",
-    "friction_coefficient", "friction_power", "wear_rate", "contact_open",
+    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "film_regime", "H0", "H_min", "H_c", "spike_pressure", "Lambda_min", "friction_force",
+    "friction_coefficient", "friction_power", "wear_rate", "contact_open", "tangential_force", "friction_torque",
+    "cam_torque_with_friction", "friction_arm", *(q for q in ROLLER_OUTPUTS if q != "roller_cycle"),
+    "asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity", "mixed_valid",
+    "fluid_traction_coefficient", "traction_regime", "traction_temperature_rise", "traction_valid",
 ))
 DEFAULT_OUTPUTS = (
     "cam_angle", "lift", "follower_velocity", "follower_acceleration", "pressure_angle", "cam_radius", "R", "u_m",
     "contact_force", "cam_torque", "w", "b", "p_h", "M", "L", "h_c", "h_min", "film_regime", "friction_force",
-    "friction_power", "wear_rate",
+    "friction_coefficient", "friction_power", "friction_torque", "cam_torque_with_friction", "wear_rate",
     "motion_continuity", "natural_frequency", "k_min", "jump_margin", "jump", "contact_force_max", "p_h_max", "h_min_cycle",
-    "friction_power_mean", "wear_rate_mean",
+    "friction_power_mean", "friction_energy_per_cycle", "friction_torque_mean", "wear_rate_mean",
 )
 HINTS = {
     "lubricant": "set CamFollower.lubricant",
@@ -65,6 +78,11 @@ HINTS = {
     "coulomb_coefficient": "give CamFollower.friction_coefficient (for the default 'coulomb' model) or pass a "
                            "friction model, e.g. models={'friction': registry.get('friction_models', "
                            "'ferrarese_uehara', k_L=2)}",
+    "traction_limit_coefficient": "give CamFollower.friction_coefficient (the roller's traction limit mu N), or "
+                                  "switch the 'non_newtonian' effect on for fluid traction",
+    "effusivity": "give the cam and follower materials density, specific_heat and thermal_conductivity (the "
+                  "thermal traction's flash temperature needs them)",
+    "sigma": "give the cam and the follower a roughness (the 'mixed' effect needs the composite roughness)",
     "archard_coefficient": "give CamFollower.wear_coefficient (for the default 'archard' model) or pass a wear model",
 }
 
@@ -85,7 +103,23 @@ def cam_follower_inputs(scene: CamFollower, effects: frozenset) -> dict[str, Any
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": "compressibility" in effects,
         **lubricant_inputs(scene.lubricant, scene.si.temperature),
     }
-    return inputs | given(hardness=cam.material.si.hardness, sigma1=cam.si.roughness, sigma2=follower.si.roughness)
+    if follower.kind == "roller":
+        inputs |= {"roller_radius": follower.si.roller_radius, "roller_inertia": follower.roller_inertia_si(cam.si.width),
+                   "pin_radius": follower.pin_radius_si, "pin_friction_coefficient": follower.pin_friction_coefficient}
+    return inputs | given(hardness=cam.material.si.hardness, sigma1=cam.si.roughness, sigma2=follower.si.roughness,
+                          traction_limit_coefficient=scene.friction_coefficient)
+
+
+def cycle_film_steps(film_model: Any, effects: frozenset) -> list[Step]:
+    """The film over the turn (quasi-steady, or transient with ``squeeze``); with ``thermal`` the film
+    step gives the isothermal films and the inlet shear-heating factor reduces them."""
+    films = films_of(film_model)
+    film = transient_films if "squeeze" in effects else quasi_steady_films
+    if "thermal" not in effects:
+        return [Step.of(film, provides=(*films, "film_regime", "film_solutions"))]
+    isothermal = {name: f"{name}_isothermal" for name in films}
+    return [Step.of(film, provides=(*films, "film_regime", "film_solutions"), rename=isothermal),
+            Step.of(cycle_inlet_thermal), Step.of(thermal_films, extra=tuple(isothermal.values()), provides=films)]
 
 
 @scene_builder(CamFollower)
@@ -93,11 +127,12 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
     """Scene graph of a :class:`~camcontact.components.CamFollower` (one variant)."""
     effects = checked_request("cam_follower", models, effects, slots=sorted(DEFAULT_MODELS),
                               supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
-    models = {**DEFAULT_MODELS, **models}
+    chosen, models = models, {**DEFAULT_MODELS, **models}
     film_model = resolve_film_model(models["film"], effects=effects) if scene.lubricant is not None else None
     friction = SlotModel("friction_models", models["friction"], "friction", scene.friction_coefficient,
                          "coulomb_coefficient")
     wear = SlotModel("wear_models", models["wear"], "wear", scene.wear_coefficient, "archard_coefficient")
+    traction = traction_model(scene, effects, models["traction"])
     steps = [
         Step.of(follower_motion), Step.of(motion_continuity), Step.of(valve_train_natural_frequency),
         Step.of(minimum_spring_stiffness), Step.of(jump_margin),
@@ -105,16 +140,14 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
         Step.of(normal_force), Step.of(jump_report), Step.of(cycle_hertz),
         lubricant_step(scene.lubricant, scene.si.temperature),
         Step.of(cycle_ehl_groups),
-        Step.of(transient_films if "squeeze" in effects else quasi_steady_films,
-                provides=(*films_of(film_model), "film_regime", "film_solutions")),
-        Step.of(numerical_film_details), Step.of(film_parameter, rename={"h": "h_min", "Lambda": "Lambda_min"}),
-        Step.of(cam_friction, extra=friction.requires, optional=friction.optional),
-        Step.of(cam_wear, extra=wear.requires, optional=wear.optional),
+        *cycle_film_steps(film_model, effects), Step.of(numerical_film_details), Step.of(film_parameter, rename={"h": "h_min", "Lambda": "Lambda_min"}),
+        *friction_steps(scene, friction, chosen, effects, traction.thermal), Step.of(cam_wear, extra=wear.requires, optional=wear.optional),
         Step.of(peak_contact_force), Step.of(peak_pressure), Step.of(h_min_cycle), Step.of(friction_power_mean),
-        Step.of(wear_rate_mean),
+        Step.of(friction_torque_mean), Step.of(wear_rate_mean),
     ]
     inputs = {**cam_follower_inputs(scene, effects), "film_model": film_model, "friction_model": friction,
-              "wear_model": wear}
+              "wear_model": wear, "thermal_model": models["thermal"], "traction_model": traction,
+              **friction_inputs(scene, effects)}
     return SceneGraph(kind="cam_follower", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS,
                       input_hints=HINTS, plotter=plot_cam_follower, effects=effects, index="cam_angle",
                       per_index=PER_ANGLE)

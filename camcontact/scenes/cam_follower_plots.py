@@ -1,4 +1,5 @@
-"""Plots of a cam–follower cycle: SVAJ diagram, cam profile, force breakdown, Hertz pressure and film."""
+"""Plots of a cam–follower cycle: SVAJ diagram, cam profile, force breakdown, Hertz pressure, film, the film
+parameter Lambda with its regime bands, and friction (force, camshaft torque) over the turn."""
 
 from __future__ import annotations
 
@@ -14,7 +15,38 @@ PANELS = {
     "forces": ("contact_force",),
     "pressure": ("p_h",),
     "film": ("h_min",),
+    "lambda": ("Lambda_min",),
+    "friction": ("friction_force",),
 }
+#: Lambda bands: boundary below 1, mixed between 1 and 3, full film above 3 (Hamrock, Schmid & Jacobson 2004)
+LAMBDA_BANDS = ((0.0, 1.0, "tab:red", "boundary"), (1.0, 3.0, "tab:orange", "mixed"))
+
+
+def _lambda_panel(ax, result, degrees) -> None:
+    top = 3.0
+    for label, row in zip(result.variants, result.rows):
+        values = np.asarray(row["Lambda_min"], dtype=float)
+        top = max(top, float(np.nanmax(values)) * 1.05)
+        ax.plot(degrees, values, label=f"Λ_min {label}".strip())
+    for low, high, colour, name in LAMBDA_BANDS:
+        ax.axhspan(low, high, color=colour, alpha=0.12, label=name)
+    ax.set(xlabel="cam angle [deg]", ylabel="Λ = h_min / σ [-]", title="film parameter", ylim=(0.0, top))
+    ax.legend(fontsize=8)
+
+
+def _friction_panel(ax, result, degrees) -> None:
+    torque_ax = ax.twinx() if any("friction_torque" in row for row in result.rows) else None
+    lines = []
+    for label, row in zip(result.variants, result.rows):
+        lines += ax.plot(degrees, row["friction_force"], label=f"force {label}".strip())
+        if torque_ax is not None and "friction_torque" in row:
+            lines += torque_ax.plot(degrees, row["friction_torque"], "--", color=lines[-1].get_color(),
+                                    label=f"camshaft torque {label}".strip())
+    ax.axhline(0.0, color="0.7", lw=0.8)
+    ax.set(xlabel="cam angle [deg]", ylabel="friction force [N]", title="friction over the turn")
+    if torque_ax is not None:
+        torque_ax.set_ylabel("friction torque [N m] (dashed)")
+    ax.legend(lines, [line.get_label() for line in lines], fontsize=8)
 
 
 def plot_cam_follower(result, *, panels=None, figsize=None):
@@ -57,6 +89,10 @@ def plot_cam_follower(result, *, panels=None, figsize=None):
             ax.axhline(0.0, color="0.7", lw=0.8)
             ax.set(xlabel="cam angle [deg]", ylabel="force [N]", title="contact force")
             ax.legend(fontsize=8)
+        elif panel == "lambda":
+            _lambda_panel(ax, result, degrees)
+        elif panel == "friction":
+            _friction_panel(ax, result, degrees)
         elif panel == "pressure":
             ax.plot(degrees, 1e-6 * np.asarray(row["p_h"]))
             ax.set(xlabel="cam angle [deg]", ylabel="p_h [MPa]", title="Hertz pressure")

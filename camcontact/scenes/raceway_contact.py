@@ -13,16 +13,19 @@ A :class:`~camcontact.components.RacewayContact` becomes the steps
     tau_max and its depth, tau_oct, the orthogonal shear tau_0, its position and range (Eqs. 7, 9, 10,
     or the exact field);
 ``roughness``
-    composite roughness, amplitude sigma / sqrt 2 and the roughness stress 5.172 ((amp/lambda)(R_x/a))^0.931 p0
-    (Eqs. 29, 30, 8);
+    composite roughness sigma (Eq. 29) and the amplitude A of the sinusoid standing for it: sigma / sqrt 2
+    in the thesis's reading (Eq. 30, reproduces its 1.59 GPa), sqrt 2 sigma (a sinusoid of RMS sigma)
+    in the corrected convention; the roughness stress 5.172 ((A/lambda)(R_x/a))^0.931 p0 (Eq. 8) and
+    Johnson's full-contact pressure p* = pi E* A / lambda of the sinusoid (Johnson 1985 §13.2);
 ``film``
     lubricant properties at the working temperature (Walther m, n; nu, eta, Gold alpha, beta, k, c;
     Eqs. 32-39), Hamrock U, G, W (Eq. 42), Grubin h0 and Dowson-Higginson h_min (Eqs. 40, 41), the
     inlet-heating, starvation and roughness factors, h_oc and Lambda (Eqs. 43, 44, 46, 13), with the
     thesis's temperature loop where the convention runs it;
 ``friction``
-    Benedict-Kelley mu (Eq. 49); pure rolling lies outside that correlation: mu is then NaN with the
-    reason in ``friction_validity`` and there is no frictional heating;
+    Benedict-Kelley mu (Eq. 49) with ``friction_valid`` (True inside the correlation's validity,
+    :attr:`camcontact.models.friction.Kelley.validity`); pure rolling lies outside that correlation:
+    mu is then NaN with the reason in ``friction_validity`` and there is no frictional heating;
 ``temperatures``
     flash temperature (Eq. 48), surface maximum (Eq. 47), viscosity at the mean pressure and the
     Couette film rise (App. D), the lubricant's maximum temperature and its check against the
@@ -49,7 +52,13 @@ from ..steps.film import raceway_roughness
 from ..steps.friction import raceway_kelley_friction
 from ..steps.kinematics import given_raceway_speeds, pure_rolling_raceway
 from ..steps.raceway_film import raceway_film_chain, thesis_temperature_loop
-from ..steps.stress import raceway_checks, raceway_subsurface, roughness_stress, roughness_stress_step
+from ..steps.stress import (
+    raceway_checks,
+    raceway_subsurface,
+    roughness_full_contact_pressure,
+    roughness_stress,
+    roughness_stress_step,
+)
 from ..steps.temperature import raceway_temperatures
 from .raceway_contact_plots import plot_raceway_contact
 from .raceway_conventions import resolve_convention
@@ -60,15 +69,15 @@ __all__ = ["build_raceway_contact", "raceway_contact_inputs", "roughness_stress"
 DEFAULT_OUTPUTS = (
     # Table 7 (Hertz, stresses)
     "E_star", "R_x", "b", "contact_area", "p_mean", "p_h", "tau_max", "z_tau_max", "tau_oct_max", "tau_roughness",
-    "tau_xz_max", "x_tau_xz_max", "z_tau_xz_max", "tau_xz_range",
+    "roughness_amplitude", "p_full_contact_roughness", "tau_xz_max", "x_tau_xz_max", "z_tau_xz_max", "tau_xz_range",
     # Table 5 (lubricant at the working temperature)
     "temperature", "walther_n", "walther_m", "kinematic_viscosity", "eta0", "alpha", "roelands_z",
     "thermoviscous_coefficient", "lubricant_conductivity", "lubricant_specific_heat",
     # kinematics, Table 8 (film, friction, temperatures)
     "u_raceway", "u_roller", "slide_roll_measure", "speed_basis", "h_c", "h_min", "thermal_loading",
     "thermal_factor", "starvation_factor", "roughness_factor", "h_c_corrected", "Lambda_oc", "regime",
-    "film_validity", "friction_coefficient", "friction_validity", "flash_temperature", "surface_temperature_max",
-    "viscosity_at_mean_pressure", "film_temperature_rise", "lubricant_temperature_max",
+    "film_validity", "friction_coefficient", "friction_valid", "friction_validity", "flash_temperature",
+    "surface_temperature_max", "viscosity_at_mean_pressure", "film_temperature_rise", "lubricant_temperature_max",
     "lubricant_temperature_check", "yield_check", "fatigue_check",
 )
 HINTS = {
@@ -110,6 +119,7 @@ def build_raceway_contact(contact: RacewayContact, *, models: Mapping[str, Any],
         Step.of(raceway_geometry),
         Step.of(pure_rolling_raceway if convention.derive_rolling_speed else given_raceway_speeds),
         Step.of(force_hertz), Step.of(raceway_subsurface), Step.of(raceway_roughness), Step.of(roughness_stress_step),
+        Step.of(roughness_full_contact_pressure),
         Step.of(raceway_film_chain), Step.of(raceway_kelley_friction), Step.of(raceway_temperatures),
         Step.of(raceway_checks),
     ]

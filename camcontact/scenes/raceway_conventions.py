@@ -21,6 +21,7 @@ lubricant_data                 "thesis" (mineral C_alpha)  "lubricant" (its own 
 grubin_exponent_digits         3 (0.727, 0.091)            None (8/11, 1/11)           12
 starvation_factor              1.0                         None (grease 0.7, oil 1.0)  13
 roughness_factor               2.0 ("gamma = 2")           1.0                         13
+roughness_amplitude            "thesis" (sigma/sqrt 2)     "sinusoid" (sqrt 2 sigma)   Eq. 30
 roelands_log10_constant        4.2 (the code's log10 form) None (ln form, 9.67)        §2.10
 stress                         "thesis_constants"          "field"                     4
 yield_rule                     "thesis" (tau vs sigma_y)   "tresca" (tau vs sigma_y/2) 5
@@ -68,6 +69,12 @@ class RacewayConvention:
         phi_A of Eq. 43; None: 0.7 for a grease, 1.0 for an oil (the thesis code's own comment).
     roughness_factor : float
         phi_R of Eq. 43 (the thesis reads 2 from a figure of the orientation parameter).
+    roughness_amplitude : str
+        Amplitude A of the sinusoid that stands for the composite roughness sigma in the roughness
+        stress (Eq. 8) and Johnson's full-contact pressure: ``"thesis"``: A = sigma / sqrt 2, the
+        thesis's reading (its Eq. 30; it reproduces its tau_max,r = 1.59 GPa); ``"sinusoid"``:
+        A = sqrt 2 sigma, the amplitude of a sinusoid whose RMS is sigma (RMS of A cos x is
+        A / sqrt 2), twice the thesis's value.
     roelands_log10_constant : float or None
         The thesis evaluates eta at the mean pressure as log10 eta_p = (log10 eta0 + c)(1 + p/p0)^Z - c
         with c = 4.2; None uses the lubricant's pressure-viscosity law.
@@ -92,6 +99,7 @@ class RacewayConvention:
     grubin_exponent_digits: int | None
     starvation_factor: float | None
     roughness_factor: float
+    roughness_amplitude: str = attrs.field(validator=one_of("thesis", "sinusoid"))
     roelands_log10_constant: float | None
     stress: str = attrs.field(validator=one_of("thesis_constants", "field"))
     yield_rule: str = attrs.field(validator=one_of("thesis", "tresca"))
@@ -107,14 +115,14 @@ class RacewayConvention:
 THESIS = RacewayConvention(
     name="thesis", convex_raceway=True, derive_rolling_speed=False, temperature_loop=True, celsius_offset=273.0,
     lubricant_data="thesis", grubin_exponent_digits=3, starvation_factor=1.0, roughness_factor=2.0,
-    roelands_log10_constant=4.2, stress="thesis_constants", yield_rule="thesis",
+    roughness_amplitude="thesis", roelands_log10_constant=4.2, stress="thesis_constants", yield_rule="thesis",
     absolute_lubricant_temperature=False,
 )
 CORRECTED = RacewayConvention(
     name="corrected", convex_raceway=False, derive_rolling_speed=True, temperature_loop=False,
     celsius_offset=273.15, lubricant_data="lubricant", grubin_exponent_digits=None, starvation_factor=None,
-    roughness_factor=1.0, roelands_log10_constant=None, stress="field", yield_rule="tresca",
-    absolute_lubricant_temperature=True,
+    roughness_factor=1.0, roughness_amplitude="sinusoid", roelands_log10_constant=None, stress="field",
+    yield_rule="tresca", absolute_lubricant_temperature=True,
 )
 CONVENTIONS = {"thesis": THESIS, "corrected": CORRECTED}
 

@@ -18,7 +18,7 @@ import attrs
 import numpy as np
 
 from .. import registry
-from ..contact.roughness import composite_roughness, lambda_ratio, lubrication_regime
+from ..contact.roughness import composite_roughness, lambda_ratio, lubrication_regime, sinusoid_amplitude
 from ..ehl.groups import hamrock_line, moes_line
 from ..errors import InputError
 from ..models.base import FilmModel
@@ -174,8 +174,9 @@ def check_thermal_data(lubricant) -> None:
     missing = []
     if lubricant.thermal_conductivity is None:
         missing.append("thermal_conductivity")
-    if lubricant.temperature_law is None:
-        missing.append("temperature-dependent viscosity data (nu40/nu100 or viscosity_data)")
+    if lubricant.temperature_law is None and lubricant.thermoviscous_coefficient is None:
+        missing.append("temperature-dependent viscosity data (nu40/nu100 or viscosity_data) or its "
+                       "thermoviscous_coefficient")
     if missing:
         raise InputError(f"the 'thermal' effect needs Lubricant {lubricant.name!r} {' and '.join(missing)}")
 
@@ -196,12 +197,23 @@ def composite_roughness_step(sigma1, sigma2):
     return {"sigma": composite_roughness(sigma1, sigma2)}
 
 
-@step("roughness", provides=("sigma", "roughness_amplitude"))
-def raceway_roughness(sigma1, sigma2):
-    """Composite RMS roughness [m] and the amplitude sigma / sqrt 2 [m] of the equivalent sinusoid
-    (Delabenetta 2021 Eqs. 29, 30)."""
+@step("roughness", provides=("sigma", "roughness_amplitude"),
+      model=lambda convention: f"amplitude {convention.roughness_amplitude}")
+def raceway_roughness(sigma1, sigma2, convention):
+    """Composite RMS roughness sigma [m] (Delabenetta 2021 Eq. 29) and the amplitude [m] of the sinusoid
+    that stands for it, by ``convention.roughness_amplitude``:
+
+    * ``"sinusoid"``: sqrt(2) sigma, the amplitude of a sinusoid whose RMS is sigma
+      (:func:`camcontact.contact.roughness.sinusoid_amplitude`);
+    * ``"thesis"``: sigma / sqrt 2, the thesis's reading (its Eq. 30), half of that; it reproduces
+      the thesis's roughness stress 1.59 GPa (Table 7).
+    """
     sigma = composite_roughness(sigma1, sigma2)
-    return {"sigma": sigma, "roughness_amplitude": sigma / math.sqrt(2.0)}
+    if convention.roughness_amplitude == "thesis":
+        amplitude = sigma / math.sqrt(2.0)
+    else:
+        amplitude = sinusoid_amplitude(sigma)
+    return {"sigma": sigma, "roughness_amplitude": amplitude}
 
 
 @step("lambda", provides=("Lambda",))

@@ -23,11 +23,12 @@ from ..ehl.groups import hamrock_line, moes_line
 from ..errors import ConvergenceError, InputError
 from ..models.film_line import LINE_INPUTS
 from ..step_graph import step
-from .film import FILMS, films_of, model_name, model_version
+from ..models.film_thermal import thermal_reduction
+from .film import FILMS, check_thermal_data, films_of, model_name, model_version
 from .kinematics import degrees_text
 
 __all__ = [
-    "MIN_CHAIN", "STEADY_M_LIMIT", "chain_count", "cycle_ehl_groups", "numerical_film_details",
+    "MIN_CHAIN", "STEADY_M_LIMIT", "chain_count", "cycle_ehl_groups", "cycle_inlet_thermal", "numerical_film_details",
     "quasi_steady_films", "solve_chain", "solve_numerically", "spike_height", "steadiest_angle", "transient_films",
 ]
 
@@ -268,3 +269,16 @@ def solve_numerically(model, state, previous):
             return produced, None
         best = best or produced  # not converged: the record says so in the regime column
     return (best, None) if best is not None else (None, failure)
+
+
+@step("thermal", provides=("thermal_loading_m", "thermal_factor"), model=lambda thermal_model: thermal_model,
+      check=check_thermal_data)
+def cycle_inlet_thermal(thermal_model, u_cam, u_follower, thermoviscous_coefficient, eta0, lubricant_conductivity,
+                        p_h, E_reduced):
+    """The thermal loading on the mean speed L_m = beta eta0 u_m^2 / k [-] and the inlet shear-heating
+    factor phi_T [-] of the film at every cam angle, by ``thermal_model`` (a factor of
+    :data:`camcontact.models.film_thermal.THERMAL_FACTORS`, with the slide-to-roll term where it has one;
+    phi_T = 1 where the entrainment reverses)."""
+    L_m, phi = thermal_reduction(thermal_model, thermoviscous_coefficient, eta0, u_cam, u_follower,
+                                 lubricant_conductivity, p_h, E_reduced)
+    return {"thermal_loading_m": np.asarray(L_m, dtype=float), "thermal_factor": np.asarray(phi, dtype=float)}

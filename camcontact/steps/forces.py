@@ -103,16 +103,24 @@ def jump_report(contact_open, contact_force, cam_angle):
 
 
 @step("load_distribution", provides=("roller_row", "azimuth", "Q", "roller_approach", "Q_max", "loaded_rollers",
-                                     "load_zone", "delta_r", "delta_a", "force_residual"), model="iso_ts_16281_line")
+                                     "load_zone", "last_loaded_azimuth", "delta_r", "delta_a", "force_residual"),
+      model="iso_ts_16281_line")
 def load_distribution(bearing, radial_load, axial_load):
     """Roller loads Q [N] of ``bearing`` under F_r, F_a [N] with its clearance (numerical, both rows),
-    per roller row by row, with the rings' displacements [m] and the force balance's residual."""
+    per roller row by row, with the rings' displacements [m] and the force balance's residual.
+
+    ``loaded_rollers``: the number of rollers with Q > 0 (both rows); ``load_zone`` [rad]: the load-zone
+    half-angle psi_l = arccos(P_d / (2 delta_r)) of Harris & Kotzalas (ch. 7; with the axial
+    displacement per row, :attr:`camcontact.contact.load_distribution.LoadDistribution.load_zone`),
+    the largest over the rows; ``last_loaded_azimuth`` [rad]: the angle of the last loaded roller
+    from the load line (largest over the rows), at or inside psi_l."""
     result = bearing.load_distribution_si(radial_load, axial_load)
     rows, Z = result.Q.shape
     return {
         "roller_row": np.repeat(np.arange(1.0, rows + 1), Z), "azimuth": result.azimuths.ravel(),
         "Q": result.Q.ravel(), "roller_approach": result.approach.ravel(), "Q_max": result.Q_max,
         "loaded_rollers": float(result.loaded.sum()), "load_zone": float(result.load_zone.max()),
+        "last_loaded_azimuth": float(result.last_loaded_azimuth.max()),
         "delta_r": result.delta_r, "delta_a": result.delta_a, "force_residual": result.residual,
     }
 

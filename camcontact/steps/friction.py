@@ -1,5 +1,6 @@
 """Friction and wear steps: the cam follower's friction and wear models per angle, Benedict–Kelley
-friction of raceway contacts with their flash temperatures.
+friction of raceway contacts with their flash temperatures and whether each contact lies inside the
+correlation's validity (boolean columns).
 
 Cam follower: any model of the ``friction_models`` / ``wear_models`` families (Coulomb, Archard,
 Ferrarese & Uehara), resolved when its step is planned (:class:`SlotModel`). Raceways: the
@@ -130,33 +131,49 @@ def cam_wear(wear_model, normal_force, u_s, angular_speed, cam_angle, **inputs):
     return {"wear_rate": np.asarray(produced["wear_rate"], dtype=float) * np.ones(cam_angle.size)}
 
 
-@step("friction", provides=("friction_coefficient", "friction_validity"), model="kelley")
+@step("friction", provides=("friction_coefficient", "friction_valid", "friction_validity"), model="kelley")
 def raceway_kelley_friction(F, length, eta0, u_raceway, u_roller):
-    """Benedict–Kelley friction coefficient of a raceway contact (Delabenetta 2021 Eq. 49); pure rolling
-    lies outside the correlation: NaN with the reason in ``friction_validity``."""
+    """Benedict–Kelley friction coefficient [-] of a raceway contact (Delabenetta 2021 Eq. 49) and whether
+    the contact lies inside the correlation's validity (``friction_valid``, bool;
+    :attr:`camcontact.models.friction.Kelley.validity`: slide-to-roll ratio |u1 - u2|/u_m in [0.01, 2]),
+    with the reason in ``friction_validity`` ("ok" inside). Outside, mu is still the correlation's
+    value; pure rolling lies outside the correlation: mu NaN (no frictional heating)."""
     if u_raceway == u_roller:
-        return {"friction_coefficient": math.nan,
+        return {"friction_coefficient": math.nan, "friction_valid": False,
                 "friction_validity": "pure rolling: the Kelley correlation needs sliding (no frictional heating)"}
-    mu = Kelley()({"normal_force": F, "contact_length": length, "eta0": eta0,
-                   "u1": u_raceway, "u2": u_roller})["friction_coefficient"]
-    return {"friction_coefficient": float(mu), "friction_validity": "ok"}
+    kelley = Kelley()
+    mu = kelley({"normal_force": F, "contact_length": length, "eta0": eta0,
+                 "u1": u_raceway, "u2": u_roller})["friction_coefficient"]
+    messages = kelley.check_validity(kelley.validity_values(u_raceway, u_roller))
+    return {"friction_coefficient": float(mu), "friction_valid": bool(kelley.inside_validity(u_raceway, u_roller)),
+            "friction_validity": "ok" if not messages else "outside the Kelley correlation: " + "; ".join(messages)}
 
 
-@step("friction", provides=("friction_coefficient_inner", "friction_coefficient_outer", "flash_temperature_inner",
+@step("friction", provides=("friction_coefficient_inner", "friction_coefficient_outer", "friction_valid_inner",
+                            "friction_valid_outer", "friction_validity", "flash_temperature_inner",
                             "flash_temperature_outer", "friction_power"), model="kelley")
 def roller_friction(Q, u_m, slide_roll_ratio, eta0, E_reduced, effusivity, contact_radii, roller_length):
     """Benedict–Kelley friction at both raceway contacts of every loaded roller with the slide/roll ratio,
     the flash temperature [K] of each contact and the bearing's sliding friction power sum(mu Q |u1 - u2|)
-    [W]; NaN for unloaded rollers (Delabenetta 2021 Eqs. 48, 49)."""
+    [W]; NaN for unloaded rollers (Delabenetta 2021 Eqs. 48, 49).
+
+    ``friction_valid_inner`` / ``_outer`` (bool per roller): the contact is loaded and inside the
+    correlation's validity (:attr:`camcontact.models.friction.Kelley.validity`, slide-to-roll ratio in
+    [0.01, 2]; False for unloaded rollers, which have no contact); ``friction_validity``: "ok" or why
+    the loaded contacts lie outside it (the coefficient is still the correlation's value)."""
     u1, u2 = u_m * (1 + 0.5 * slide_roll_ratio), u_m * (1 - 0.5 * slide_roll_ratio)
     loaded = Q > 0.0
-    out = {}
+    kelley = Kelley()
+    inside = bool(kelley.inside_validity(u1, u2))
+    messages = kelley.check_validity(kelley.validity_values(u1, u2))
+    out = {"friction_validity": "ok" if not messages else "outside the Kelley correlation: " + "; ".join(messages)}
     power = 0.0
     for race in RACES:
         mu, flash = np.full(Q.size, np.nan), np.full(Q.size, np.nan)
+        out[f"friction_valid_{race}"] = loaded & inside
         if loaded.any():
-            mu[loaded] = Kelley()({"normal_force": Q[loaded], "contact_length": roller_length, "eta0": eta0,
-                                   "u1": u1, "u2": u2})["friction_coefficient"]
+            mu[loaded] = kelley({"normal_force": Q[loaded], "contact_length": roller_length, "eta0": eta0,
+                                 "u1": u1, "u2": u2})["friction_coefficient"]
             for j in np.flatnonzero(loaded):
                 flash[j] = flash_temperature(Q[j] / roller_length, E_reduced, contact_radii[race], mu[j], u1, u2,
                                              effusivity, effusivity)

@@ -1,7 +1,9 @@
 """Stress steps: the field below a contact, the roughness stress and the yield and fatigue checks.
 
 Line contact with friction: McEwen's closed form (:mod:`camcontact.contact.subsurface`); Delabenetta
-(2021) Eqs. 7-10 and §4.1 for the raceway contact's constants and rules; the 2-D slice through a CVT
+(2021) Eqs. 7-10 and §4.1 for the raceway contact's constants and rules, Eq. 8 (after Seabra) for its
+roughness stress and Johnson (1985) §13.2 for the pressure that flattens the roughness sinusoid; the
+2-D slice through a CVT
 contact (Saccheto 2008 §3.4) by :func:`camcontact.contact.slice_stress.slice_extremum`. Lengths [m],
 stresses and pressures [Pa].
 """
@@ -12,13 +14,15 @@ import math
 
 import numpy as np
 
+from ..contact.roughness import sinusoid_full_contact_pressure
 from ..contact.slice_stress import slice_extremum
 from ..contact.subsurface import line_subsurface
 from ..step_graph import step
 
 __all__ = [
     "THESIS_STRESS", "ball_cone_slice_stresses", "line_subsurface_stresses", "most_loaded_subsurface",
-    "raceway_checks", "raceway_subsurface", "roughness_stress", "roughness_stress_step", "slice_through_centre",
+    "raceway_checks", "raceway_subsurface", "roughness_full_contact_pressure", "roughness_stress",
+    "roughness_stress_step", "slice_through_centre",
 ]
 
 LINE_SUBSURFACE = ("tau_max", "x_tau_max", "z_tau_max", "tresca_max", "z_tresca_max", "von_mises_max",
@@ -85,8 +89,20 @@ def roughness_stress(amplitude: float, wavelength: float, R_x: float, a: float, 
 
 @step("roughness_stress", provides=("tau_roughness",), model="seabra_eq8")
 def roughness_stress_step(roughness_amplitude, roughness_wavelength, R_x, b, p_h):
-    """The roughness stress of the raceway contact (:func:`roughness_stress`)."""
+    """The roughness stress [Pa] of the raceway contact (:func:`roughness_stress`) with the amplitude
+    [m] of the convention (sigma / sqrt 2 in the thesis's reading, sqrt 2 sigma for a sinusoid of RMS
+    sigma: the stress then rises by 2^0.931)."""
     return {"tau_roughness": roughness_stress(roughness_amplitude, roughness_wavelength, R_x, b, p_h)}
+
+
+@step("roughness_contact", provides=("p_full_contact_roughness",), model="johnson_wavy_surface")
+def roughness_full_contact_pressure(roughness_amplitude, roughness_wavelength, E_star):
+    """Mean pressure [Pa] that flattens the roughness sinusoid (amplitude [m], wavelength [m]) completely,
+    p* = pi E* A / lambda with E* = E'/2 [Pa] (Johnson 1985 §13.2,
+    :func:`camcontact.contact.roughness.sinusoid_full_contact_pressure`); to set against the Hertz
+    pressure: below p* the roughness is not flattened."""
+    return {"p_full_contact_roughness": sinusoid_full_contact_pressure(roughness_amplitude, roughness_wavelength,
+                                                                       E_star)}
 
 
 @step("checks", provides=("yield_check", "fatigue_check"), model=lambda convention: convention.yield_rule)

@@ -12,7 +12,7 @@ import numpy as np
 from ..errors import InputError
 from ..step_graph import step
 
-__all__ = ["cycle_mean", "friction_power_mean", "h_min_cycle", "jump_margin", "peak_contact_force",
+__all__ = ["cycle_mean", "friction_power_mean", "friction_torque_mean", "h_min_cycle", "jump_margin", "peak_contact_force",
            "peak_pressure", "wear_rate_mean"]
 
 
@@ -47,10 +47,20 @@ def h_min_cycle(h_min):
     return {"h_min_cycle": float(np.nanmin(h_min)) if np.any(np.isfinite(h_min)) else 0.0}
 
 
-@step("friction_power_mean", provides=("friction_power_mean",))
-def friction_power_mean(friction_power, cam_angle):
-    """The friction power averaged over the turn [W]."""
-    return {"friction_power_mean": cycle_mean(cam_angle, friction_power)}
+@step("friction_power_mean", provides=("friction_power_mean", "friction_energy_per_cycle"))
+def friction_power_mean(friction_power, speed, cam_angle):
+    """The friction power averaged over the turn [W] and the energy it dissipates per cam turn [J] at cam
+    speed [rad/s]."""
+    mean = cycle_mean(cam_angle, friction_power)
+    return {"friction_power_mean": mean, "friction_energy_per_cycle": mean * 2.0 * math.pi / speed}
+
+
+@step("friction_torque_mean", provides=("friction_torque_mean", "cam_torque_with_friction_max"))
+def friction_torque_mean(friction_torque, cam_torque_with_friction, cam_angle):
+    """The camshaft friction torque averaged over the turn [N m] (its work per turn over 2 pi) and the
+    largest drive torque with friction [N m]."""
+    return {"friction_torque_mean": cycle_mean(cam_angle, friction_torque),
+            "cam_torque_with_friction_max": float(np.max(cam_torque_with_friction))}
 
 
 @step("wear_rate_mean", provides=("wear_rate_mean", "wear_volume_per_cycle"))

@@ -145,6 +145,35 @@ def test_corrected_convention_against_hand_calculation(both):
     assert c["Lambda_oc"] == pytest.approx(c["h_c_corrected"] / math.hypot(0.23e-6, 0.23e-6), rel=1e-12)
 
 
+def test_roughness_amplitude_thesis_reading_and_sinusoid(both):
+    """The thesis reads the amplitude of the roughness sinusoid as sigma/sqrt 2 (Eq. 30, 0.23 um) and gets
+    tau_max,r = 1.592818e9 Pa (§4.2, Table 7: 1.59 GPa): kept, labelled, in the thesis convention. A
+    sinusoid of RMS sigma has the amplitude sqrt 2 sigma = 0.46 um, exactly twice (issue 16, error 3);
+    the corrected convention uses it: Eq. 8 by hand with its R_x, a and p0 gives 3.018 GPa, and
+    Johnson's (1985 §13.2) full-contact pressure pi E* A / lambda = 1.80 GPa. Flipping that one
+    switch on the thesis raises tau_max,r by exactly 2^0.931."""
+    import attrs
+
+    t, c = both["11-572"]["thesis"], both["11-572"]["corrected"]
+    sigma = math.hypot(0.23e-6, 0.23e-6)
+    assert t["roughness_amplitude"] == pytest.approx(sigma / math.sqrt(2), rel=1e-12)
+    assert round(t["roughness_amplitude"] * 1e6, 2) == 0.23
+    assert t["tau_roughness"] == pytest.approx(1.592818e9, rel=1e-6)
+    assert c["roughness_amplitude"] == pytest.approx(math.sqrt(2) * sigma, rel=1e-12)
+    assert c["roughness_amplitude"] / t["roughness_amplitude"] == pytest.approx(2.0, rel=1e-14)
+    tau = 5.172 * (c["roughness_amplitude"] / 88.3e-6 * c["R_x"] / c["b"]) ** 0.931 * c["p_h"]
+    assert c["tau_roughness"] == pytest.approx(tau, rel=1e-12)
+    assert round(c["tau_roughness"] * 1e-6) == 3018
+    for row in (t, c):
+        p_star = math.pi * row["E_star"] * row["roughness_amplitude"] / 88.3e-6
+        assert row["p_full_contact_roughness"] == pytest.approx(p_star, rel=1e-12)
+    assert round(c["p_full_contact_roughness"] * 1e-9, 2) == 1.80
+    switched = attrs.evolve(THESIS, roughness_amplitude="sinusoid")
+    sinusoid = cc.Analysis(contact("11-572"), models={"convention": switched},
+                           outputs=["roughness_amplitude", "tau_roughness"]).run()
+    assert sinusoid["tau_roughness"] / t["tau_roughness"] == pytest.approx(2.0**0.931, rel=1e-12)
+
+
 def test_corrections_change_the_conclusions(both):
     """The corrections move NH1 11-572 from "full film, thermally insufficient" (thesis) to the mixed
     regime (Lambda about 2) and no frictional heating at pure rolling: the Kelley correlation does not
@@ -153,6 +182,7 @@ def test_corrections_change_the_conclusions(both):
     assert t["regime"] == "full film" and c["regime"] == "mixed"
     assert 1.5 < c["Lambda_oc"] < 2.5
     assert math.isnan(c["friction_coefficient"]) and c["friction_validity"].startswith("pure rolling")
+    assert c["friction_valid"] is False and t["friction_valid"] is True  # thesis: slide-to-roll ratio 0.54
     assert c["flash_temperature"] == 0.0
     assert c["lubricant_temperature_max"] == pytest.approx(358.15)
     assert c["lubricant_temperature_check"].startswith("within")

@@ -139,3 +139,62 @@ def test_contact_temperature_inputs_are_checked():
         flash_temperature(2.4e5, 2.2e11, 0.0124, 0.04, 1.0, 3.0, 1.2e4, 0.0)
     with pytest.raises(InputError, match="beta = 0"):
         couette_temperature_rise(0.0, 1.0, 600.0, 0.13)
+
+
+def test_load_zone_is_harris_arccos_of_clearance_over_twice_the_displacement():
+    """Harris & Kotzalas (ch. 7): the loaded arc of a radially loaded bearing with diametral clearance P_d
+    ends at psi_l = arccos(P_d / (2 delta_r)). By hand from the solved delta_r for 100 um clearance; the
+    contact angle cancels (ring displacement and clearance both project with cos alpha on the normal);
+    the last loaded roller lies inside psi_l, the next one outside; zero clearance: exactly 90 deg."""
+    for clearance in (50e-6, 100e-6, 300e-6):
+        result = solve_load_distribution(100e3, 0.0, rollers_per_row=25, contact_angle=ALPHA, stiffness=K,
+                                         clearance=clearance)
+        by_hand = math.acos(clearance / (2.0 * result.delta_r))
+        np.testing.assert_allclose(result.load_zone, [by_hand, by_hand], rtol=1e-12)
+        pitch = 2 * math.pi / 25
+        assert np.all(result.last_loaded_azimuth <= result.load_zone)
+        assert np.all(result.load_zone < result.last_loaded_azimuth + pitch)
+        # the roller count follows: per row 1 + 2 floor(psi_l / pitch) rollers inside the load zone
+        assert result.loaded.sum() == 2 * (1 + 2 * math.floor(by_hand / pitch))
+    zero = solve_load_distribution(100e3, 0.0, rollers_per_row=25, contact_angle=ALPHA, stiffness=K, clearance=0.0)
+    np.testing.assert_allclose(np.degrees(zero.load_zone), [90.0, 90.0], rtol=1e-14)
+    assert np.degrees(zero.last_loaded_azimuth) == pytest.approx([86.4, 86.4])
+
+
+def test_load_zone_with_axial_load_and_edge_cases():
+    """With an axial displacement each row's approach is cos(alpha)(delta_r cos psi + s delta_a tan alpha
+    - c/2), so cos psi_l = (c/2 - s delta_a tan alpha)/delta_r per row: the row that carries the axial
+    load has the wider zone. A preload that loads every roller gives pi; a pure axial load loads one row
+    whole (pi) and leaves the other unloaded (0); no load: 0."""
+    result = solve_load_distribution(100e3, 20e3, rollers_per_row=25, contact_angle=ALPHA, stiffness=K,
+                                     clearance=50e-6)
+    expected = [math.acos((25e-6 - s * result.delta_a * math.tan(ALPHA)) / result.delta_r) for s in (1.0, -1.0)]
+    np.testing.assert_allclose(result.load_zone, expected, rtol=1e-12)
+    assert result.load_zone[0] > result.load_zone[1]
+    preload = solve_load_distribution(10e3, 0.0, rollers_per_row=25, contact_angle=ALPHA, stiffness=K,
+                                      clearance=-50e-6)
+    assert preload.loaded.all() and np.all(preload.load_zone == math.pi)
+    axial = solve_load_distribution(0.0, 50e3, rollers_per_row=25, contact_angle=ALPHA, stiffness=K)
+    np.testing.assert_array_equal(axial.load_zone, [math.pi, 0.0])
+    none = solve_load_distribution(0.0, 0.0, rollers_per_row=25, contact_angle=ALPHA, stiffness=K, clearance=1e-4)
+    np.testing.assert_array_equal(none.load_zone, [0.0, 0.0])
+
+
+def test_tutorial_5_load_zone_40_6_deg_with_ten_loaded_rollers():
+    """Tutorial 5 (24040 CC/W33 as assumed there: 2 x 25 rollers of 27 x 41.35 mm, alpha 10 deg, 0.1 mm
+    clearance) under the radial load that puts 10 kN on the most loaded roller: ten loaded rollers
+    (five per row, the last at +-28.8 deg, the old load_zone), Harris's load zone
+    arccos(0.1 mm / (2 delta_r)) = 40.6 deg (issue 16, error 5)."""
+    from scipy.optimize import brentq
+
+    bearing = cc.SphericalRollerBearing(
+        designation="24040 CC/W33", bore="200 mm", outer_diameter="310 mm", width="109 mm", rollers_per_row=25,
+        roller_diameter="27 mm", roller_length="41.35 mm", contact_angle="10 deg", C="1700 kN", C0="2120 kN",
+        radial_clearance="0.1 mm")
+    radial = brentq(lambda F: bearing.load_distribution_si(F).Q_max - 10e3, 10e3, 500e3, xtol=1.0)
+    result = bearing.load_distribution_si(radial)
+    assert radial == pytest.approx(67.8e3, rel=2e-3)
+    assert result.loaded.sum() == 10
+    np.testing.assert_allclose(np.degrees(result.last_loaded_azimuth), [28.8, 28.8])
+    np.testing.assert_allclose(result.load_zone, math.acos(0.1e-3 / (2 * result.delta_r)), rtol=1e-12)
+    assert round(float(np.degrees(result.load_zone.max())), 1) == 40.6

@@ -121,6 +121,34 @@ def test_kelley_friction_and_flash_temperature_per_contact():
         cc.Analysis(scene(slide_roll_ratio=0.05), outputs=["flash_temperature_outer"])
 
 
+def test_kelley_validity_and_load_zone_in_the_report():
+    """Per roller, booleans say whether each raceway contact lies inside the Kelley correlation's validity
+    (slide-to-roll ratio in [0.01, 2]): 0.2 % slip flags every loaded contact, 5 % none; unloaded
+    rollers are False; the reason is text in the summary. The summary gives Harris's load zone
+    arccos((c/2 - s delta_a tan alpha)/delta_r) of the wider row, the last loaded roller's azimuth
+    (inside it) and the count of loaded rollers."""
+    thermal_steel = cc.Material(E="210 GPa", nu=0.3, density="7810 kg/m^3", specific_heat="464 J/(kg K)",
+                                thermal_conductivity="42.4 W/(m K)")
+    names = ["Q", "friction_valid_inner", "friction_valid_outer", "friction_validity", "load_zone",
+             "last_loaded_azimuth", "loaded_rollers", "delta_r", "delta_a"]
+    for slip, inside in ((0.002, False), (0.05, True)):
+        result = cc.Analysis(scene(bearing=bearing(material=thermal_steel), slide_roll_ratio=slip), outputs=names).run()
+        loaded = np.asarray(result["Q"]) > 0
+        frame = result.to_frame()
+        for race in ("inner", "outer"):
+            column = frame[f"friction_valid_{race}"]
+            assert column.dtype == bool
+            np.testing.assert_array_equal(column.to_numpy(), loaded & inside)
+        assert (result["friction_validity"] == "ok") is inside
+    zones = [math.acos((0.05e-3 - s * result["delta_a"] * math.tan(math.radians(9))) / result["delta_r"])
+             for s in (1.0, -1.0)]
+    assert result["load_zone"] == pytest.approx(max(zones), rel=1e-12)
+    assert result["last_loaded_azimuth"] <= result["load_zone"] < result["last_loaded_azimuth"] + 2 * math.pi / 25
+    assert result["loaded_rollers"] == float(loaded.sum())
+    summary = result.summary_frame()
+    assert summary["load_zone [deg]"].iloc[0] == pytest.approx(math.degrees(max(zones)), rel=1e-12)
+
+
 def test_numerical_film_in_the_bearing_scene():
     from camcontact.models.film_multigrid import Multigrid
 

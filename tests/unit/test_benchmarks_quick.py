@@ -74,3 +74,16 @@ def test_accuracy_vs_time_point_quick(tmp_path):
     assert by.loc["multigrid 129x129", "error H_c [%]"] == 0.0  # the finest level is the reference here
     # NVM fits numerical solutions: within 5 % of the 129^2 central film (test_point_ehl_literature: 257^2)
     assert abs(by.loc["nijenbanning", "error H_c [%]"]) < 5.0
+
+
+def test_accuracy_vs_time_friction_quick(tmp_path):
+    frame = _load("accuracy_vs_time").main(["--friction", "--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "accuracy_vs_time_friction.csv").exists()
+    by = frame.set_index("rung")
+    assert len(by) == 6 and (frame["time per angle [ms]"] > 0).all()
+    # the Newtonian film overestimates traction by orders of magnitude; Eyring brings it into the EHL range
+    assert by.loc["mixed, newtonian fluid", "peak coefficient"] > 1.0
+    assert by.loc["eyring isothermal", "peak coefficient"] < 0.1
+    # the contact temperature lowers the friction power
+    assert by.loc["mixed + eyring + thermal", "friction power mean [W]"] < by.loc["mixed + eyring isothermal",
+                                                                                 "friction power mean [W]"]

@@ -197,3 +197,34 @@ def test_kelley_friction_limits_and_bad_input():
         model({**state, "u2": 4.7})
     with pytest.raises(InputError, match="eta0"):
         model({**state, "eta0": -1.0})
+
+
+def test_kelley_validity_is_data_and_flags_small_slip():
+    """Kelley's validity as data: slide-to-roll ratio S = |u1 - u2|/u_m in [0.01, 2] (docstring: the
+    correlation falls with sliding while EHL traction vanishes with the slip, so it cannot hold in the
+    linear region of a traction curve; beyond S = 2 the surfaces run in opposite directions). 0.2 %
+    slip is outside (and there the coefficient rises above its 2 % value, the symptom of issue 16,
+    error 4), 10 % and 2 % inside, per contact over an array, with the reason from check_validity."""
+    import camcontact as cc
+
+    model = cc.registry.get("friction_models", "kelley")
+    assert type(model).validity == {"slide_roll_ratio": (0.01, 2.0)}
+    u_m = 2.0
+
+    def speeds(S):
+        return u_m * (1 + S / 2), u_m * (1 - S / 2)
+
+    assert model.validity_values(*speeds(0.002))["slide_roll_ratio"] == pytest.approx(0.002, rel=1e-12)
+    assert model.inside_validity(*speeds(0.002)) is False
+    assert model.inside_validity(*speeds(0.1)) is True and model.inside_validity(*speeds(0.02)) is True
+    assert model.inside_validity(3.0, -1.0) is False  # S = 4: the surfaces run in opposite directions
+    assert model.inside_validity(1.0, -1.0) is False  # u_m = 0: S infinite
+    u1 = np.array([speeds(S)[0] for S in (0.002, 0.02, 0.1, 1.0)])
+    u2 = np.array([speeds(S)[1] for S in (0.002, 0.02, 0.1, 1.0)])
+    np.testing.assert_array_equal(model.inside_validity(u1, u2), [False, True, True, True])
+    assert model.check_validity(model.validity_values(*speeds(0.1))) == []
+    assert model.check_validity(model.validity_values(*speeds(0.002))) == [
+        "slide_roll_ratio = 0.002 below the validated range [0.01, 2.0]"]
+    state = {"normal_force": 10e3, "contact_length": 0.04, "eta0": 0.05}
+    mu = {S: model({**state, "u1": speeds(S)[0], "u2": speeds(S)[1]})["friction_coefficient"] for S in (0.002, 0.02)}
+    assert mu[0.002] > mu[0.02]

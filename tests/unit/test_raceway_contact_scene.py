@@ -141,6 +141,8 @@ def test_convention_validation():
         attrs.evolve(THESIS, roughness_factor=0.0)
     with pytest.raises(InputError, match="RacewayConvention.stress = 'exact'"):
         RacewayConvention(**{**attrs.asdict(THESIS), "stress": "exact"})
+    with pytest.raises(InputError, match="RacewayConvention.roughness_amplitude = 'rms'"):
+        attrs.evolve(THESIS, roughness_amplitude="rms")
 
 
 def test_oil_thermal_property_correlations():

@@ -180,15 +180,28 @@ def test_check_thermal_data():
 
 # ----------------------------------------------------------------------------- roughness, Lambda, regime
 def test_composite_and_raceway_roughness():
-    """sigma = sqrt(s1^2 + s2^2) (Delabenetta Eq. 29); the equivalent sinusoid's amplitude sigma/sqrt 2
-    (Eq. 30): 0.23 um for two 0.23 um surfaces; a negative roughness is refused."""
+    """sigma = sqrt(s1^2 + s2^2) (Delabenetta Eq. 29); the amplitude of the sinusoid standing for it:
+    the thesis's reading sigma/sqrt 2 (Eq. 30, 0.23 um for two 0.23 um surfaces) in the thesis
+    convention, sqrt 2 sigma (a sinusoid of RMS sigma: 0.46 um) in the corrected one, exactly twice
+    as much; a negative roughness is refused."""
+    from camcontact.scenes.raceway_conventions import CORRECTED, THESIS
+
     out = composite_roughness_step(0.3e-6, 0.4e-6)
     assert_provides(composite_roughness_step, out)
     assert out["sigma"] == pytest.approx(0.5e-6, rel=1e-12)
-    out = raceway_roughness(0.23e-6, 0.23e-6)
-    assert_provides(raceway_roughness, out)
-    assert out["sigma"] == pytest.approx(math.sqrt(2) * 0.23e-6, rel=1e-12)
-    assert out["roughness_amplitude"] == pytest.approx(0.23e-6, rel=1e-12)
+    thesis = raceway_roughness(0.23e-6, 0.23e-6, THESIS)
+    assert_provides(raceway_roughness, thesis)
+    assert thesis["sigma"] == pytest.approx(math.sqrt(2) * 0.23e-6, rel=1e-12)
+    assert thesis["roughness_amplitude"] == pytest.approx(0.23e-6, rel=1e-12)
+    corrected = raceway_roughness(0.23e-6, 0.23e-6, CORRECTED)
+    assert corrected["sigma"] == thesis["sigma"]
+    assert corrected["roughness_amplitude"] == pytest.approx(0.46e-6, rel=1e-12)
+    assert corrected["roughness_amplitude"] == pytest.approx(math.sqrt(2) * corrected["sigma"], rel=1e-15)
+    assert corrected["roughness_amplitude"] / thesis["roughness_amplitude"] == pytest.approx(2.0, rel=1e-15)
+    # the RMS of A cos(x) over a period is A / sqrt 2: the sinusoid with amplitude sqrt 2 sigma has RMS sigma
+    x = np.linspace(0.0, 2 * np.pi, 20001)[:-1]
+    rms = np.sqrt(np.mean((corrected["roughness_amplitude"] * np.cos(x)) ** 2))
+    assert rms == pytest.approx(corrected["sigma"], rel=1e-12)
     with pytest.raises(InputError, match="roughness"):
         composite_roughness_step(-1e-7, 1e-7)
 

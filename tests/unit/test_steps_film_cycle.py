@@ -186,3 +186,17 @@ def test_numerical_film_details_of_a_real_solution_scale_with_hertz():
     assert out["H_min"][0] * b2 / R[0] == pytest.approx(films["h_min"][0], rel=1e-9)
     assert out["H_c"][0] * b2 / R[0] == pytest.approx(films["h_c"][0], rel=1e-9)
     assert out["H0"][0] < 0.0 < out["H_min"][0] < out["H_c"][0]
+
+
+def test_cycle_inlet_thermal_per_angle_with_reversal():
+    from camcontact.steps.film_cycle import cycle_inlet_thermal
+
+    u_cam, u_follower = np.array([4.0, 2.0, 1.0]), np.array([4.0, -1.0, -1.0])
+    out = cycle_inlet_thermal("wilson_sheu", u_cam, u_follower, 0.03, 0.04, 0.13, np.full(3, 1e9), 2.2e11)
+    assert_provides(cycle_inlet_thermal, out)
+    L = 0.03 * 0.04 * ((u_cam + u_follower) / 2) ** 2 / 0.13
+    np.testing.assert_allclose(out["thermal_loading_m"], L, rtol=1e-12)
+    Z = np.abs(u_cam - u_follower)[:2] / np.abs(u_cam + u_follower)[:2]
+    assert out["thermal_factor"][0] == pytest.approx(1 / (1 + 0.241 * L[0] ** 0.64), rel=1e-12)
+    assert out["thermal_factor"][1] == pytest.approx(1 / (1 + 0.241 * (1 + 14.8 * Z[1] ** 0.83) * L[1] ** 0.64))
+    assert out["thermal_factor"][2] == 1.0  # u1 + u2 = 0: no entrainment, no inlet heating

@@ -204,18 +204,27 @@ def test_load_distribution_balance_and_load_deflection_law():
     np.testing.assert_allclose(out["roller_approach"], delta, rtol=1e-9, atol=1e-15)
     assert out["Q_max"] == pytest.approx(Q.max()) and out["loaded_rollers"] == float(np.sum(Q > 0))
     loaded_angles = np.abs(np.angle(np.exp(1j * psi[Q > 0])))
-    assert out["load_zone"] == pytest.approx(loaded_angles.max())
+    assert out["last_loaded_azimuth"] == pytest.approx(loaded_angles.max())
+    # load zone (Harris & Kotzalas ch. 7) per row: the approach vanishes where
+    # delta_r cos psi + s delta_a tan alpha - c/2 = 0; the larger of the two rows is reported
+    zones = [math.acos((0.5e-4 - sign * out["delta_a"] * math.tan(alpha)) / out["delta_r"]) for sign in (1, -1)]
+    assert out["load_zone"] == pytest.approx(max(zones), rel=1e-12)
+    assert out["last_loaded_azimuth"] <= out["load_zone"] < out["last_loaded_azimuth"] + 2 * math.pi / 25
     assert out["force_residual"] < 1e-8
 
 
 def test_load_distribution_stribeck_and_no_load():
     """Zero clearance, radial load only: Stribeck's Q_max = 4.08 F_r/(Z cos alpha) for line contact,
-    here Z = 2 x 25 rollers (within 2 %: 4.08 is the continuous-integral value); no load: nothing loaded."""
+    here Z = 2 x 25 rollers (within 2 %: 4.08 is the continuous-integral value); Harris's load zone
+    arccos(P_d/(2 delta_r)) is 90 deg exactly with zero clearance, the last loaded roller at 86.4 deg;
+    no load: nothing loaded."""
     out = load_distribution(bearing(radial_clearance="0 mm"), 100e3, 0.0)
     assert out["Q_max"] == pytest.approx(4.08 * 100e3 / (50 * math.cos(math.radians(9))), rel=0.02)
-    assert out["load_zone"] == pytest.approx(math.pi / 2, abs=2 * math.pi / 25)  # half the ring loaded
+    assert out["load_zone"] == pytest.approx(math.pi / 2, rel=1e-12)  # arccos(0): half the ring loaded
+    assert out["last_loaded_azimuth"] == pytest.approx(math.radians(86.4))  # the last roller inside 90 deg
     none = load_distribution(bearing(), 0.0, 0.0)
     assert none["loaded_rollers"] == 0.0 and none["Q_max"] == 0.0 and np.all(none["Q"] == 0.0)
+    assert none["load_zone"] == 0.0 and none["last_loaded_azimuth"] == 0.0
 
 
 # ----------------------------------------------------------------------------- ball-cone CVT loads

@@ -122,12 +122,27 @@ def test_raceway_kelley_friction_delabenetta_table_8():
     assert out["friction_coefficient"] == pytest.approx(kelley(10e3, 0.04135, eta, u1, u2), rel=1e-12)
     assert out["friction_coefficient"] == pytest.approx(0.03748, abs=5e-6)
     assert out["friction_validity"] == "ok"
+    assert out["friction_valid"] is True  # slide-to-roll ratio |u1 - u2|/u_m = 0.54, inside [0.01, 2]
+
+
+def test_raceway_kelley_friction_flags_small_slip_outside_its_validity():
+    """0.2 % slip (|u1 - u2|/u_m = 0.002): below the correlation's range [0.01, 2], flagged False with the
+    reason, mu still the correlation's value (it rises as the slip falls: 0.2 % gives more than 2 %);
+    10 % slip lies inside."""
+    eta = 0.05
+    low = raceway_kelley_friction(10e3, 0.04, eta, 2.002, 1.998)
+    assert low["friction_valid"] is False
+    assert low["friction_validity"].startswith("outside the Kelley correlation: slide_roll_ratio = 0.002 below")
+    assert low["friction_coefficient"] == pytest.approx(kelley(10e3, 0.04, eta, 2.002, 1.998), rel=1e-12)
+    mid = raceway_kelley_friction(10e3, 0.04, eta, 2.1, 1.9)
+    assert mid["friction_valid"] is True and mid["friction_validity"] == "ok"
+    assert low["friction_coefficient"] > mid["friction_coefficient"]
 
 
 def test_raceway_kelley_friction_pure_rolling_is_nan_with_reason():
     """u1 = u2: outside the correlation (no sliding): NaN and the reason."""
     out = raceway_kelley_friction(10e3, 0.04135, 0.07, 3.0, 3.0)
-    assert math.isnan(out["friction_coefficient"])
+    assert math.isnan(out["friction_coefficient"]) and out["friction_valid"] is False
     assert out["friction_validity"].startswith("pure rolling")
 
 
@@ -152,5 +167,26 @@ def test_roller_friction_per_roller_and_race():
             power += mu * Q[j] * abs(u1 - u2)
         assert math.isnan(out[f"friction_coefficient_{race}"][1]) and math.isnan(out[f"flash_temperature_{race}"][1])
     assert out["friction_power"] == pytest.approx(power, rel=1e-12)
+    # s = 10 %: inside the validity at the loaded rollers; the unloaded roller has no contact
+    for race in radii:
+        assert out[f"friction_valid_{race}"].dtype == bool
+        np.testing.assert_array_equal(out[f"friction_valid_{race}"], [True, False, True])
+    assert out["friction_validity"] == "ok"
     idle = roller_friction(np.zeros(3), u_m, s, eta, E, EFFUSIVITY, radii, length)
     assert idle["friction_power"] == 0.0 and np.all(np.isnan(idle["friction_coefficient_inner"]))
+    assert not idle["friction_valid_outer"].any()
+
+
+def test_roller_friction_flags_contacts_below_the_correlations_slip_range():
+    """0.2 % slip: every loaded contact is flagged outside the Kelley correlation (False) with the reason,
+    while 2 % (the tutorial's assumed slip) lies inside [0.01, 2]."""
+    Q = np.array([20e3, 0.0, 5e3])
+    radii = {"inner": 0.0121, "outer": 0.0149}
+    low = roller_friction(Q, 2.0, 0.002, 0.06, 2.3e11, EFFUSIVITY, radii, 0.04)
+    assert not low["friction_valid_inner"].any() and not low["friction_valid_outer"].any()
+    assert "slide_roll_ratio = 0.002 below the validated range" in low["friction_validity"]
+    assert np.all(np.isfinite(low["friction_coefficient_outer"][[0, 2]]))
+    usual = roller_friction(Q, 2.0, 0.02, 0.06, 2.3e11, EFFUSIVITY, radii, 0.04)
+    np.testing.assert_array_equal(usual["friction_valid_inner"], [True, False, True])
+    assert usual["friction_validity"] == "ok"
+    assert np.all(low["friction_coefficient_outer"][[0, 2]] > usual["friction_coefficient_outer"][[0, 2]])

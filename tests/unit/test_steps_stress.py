@@ -5,7 +5,8 @@ at z = 0.786 b; |tau_xz| = 0.250 p_h at x = +-0.866 b, z = 0.5 b; von Mises 0.55
 nu = 0.3); with friction, the maxima of McEwen's closed-form field (Johnson 1985 §7.1, written out in
 :func:`mcewen` below) searched on a zoomed grid in the test; Delabenetta (2021) Table 7 (tau_max 248 MPa,
 Z_s 146.4 um, tau_xz 206.67 MPa, Z_0 78.12 um, tau_oct 2.232e8 Pa, roughness stress 1.592818e9 Pa) and
-its §4.1 rules as printed in its Table 8 checks.
+its §4.1 rules as printed in its Table 8 checks; Johnson (1985) §13.2 for the full-contact pressure of a
+sinusoid.
 """
 
 import math
@@ -21,6 +22,7 @@ from camcontact.steps.stress import (
     most_loaded_subsurface,
     raceway_checks,
     raceway_subsurface,
+    roughness_full_contact_pressure,
     roughness_stress_step,
 )
 from step_checks import assert_provides
@@ -152,6 +154,29 @@ def test_roughness_stress_delabenetta_eq_8():
     assert out["tau_roughness"] == pytest.approx(5.172 * (0.23 / 88.3 * R_x / 1.862393e-4) ** 0.931 * 826.67e6,
                                                  rel=1e-12)
     assert out["tau_roughness"] == pytest.approx(1.592818e9, rel=1e-5)
+    # twice the amplitude (sqrt 2 sigma for a sinusoid of RMS sigma instead of the thesis's sigma/sqrt 2)
+    double = roughness_stress_step(0.46e-6, 88.3e-6, R_x, 1.862393e-4, 826.67e6)
+    assert double["tau_roughness"] / out["tau_roughness"] == pytest.approx(2.0**0.931, rel=1e-12)
+
+
+def test_roughness_full_contact_pressure_johnson():
+    """p* = pi E* A / lambda flattens a 2-D sinusoid (Johnson 1985 §13.2): by hand with E* = 109.89011 GPa
+    (E = 200 GPa, nu = 0.3 both bodies), A = sqrt 2 x 0.32527 um = 0.46 um, lambda = 88.3 um:
+    pi x 109.89011e9 x 0.46e-6 / 88.3e-6 = 1.7985e9 Pa (1.80 GPa, issue 16); bad inputs are refused."""
+    E_star = 1.0 / (2 * (1 - 0.3**2) / 200e9)
+    assert E_star == pytest.approx(109.89011e9, rel=1e-7)
+    out = roughness_full_contact_pressure(0.46e-6, 88.3e-6, E_star)
+    assert_provides(roughness_full_contact_pressure, out)
+    assert out["p_full_contact_roughness"] == pytest.approx(3.141592653589793 * 109.89011e9 * 0.46e-6 / 88.3e-6,
+                                                            rel=1e-7)
+    assert round(out["p_full_contact_roughness"] * 1e-9, 2) == 1.80
+    assert roughness_full_contact_pressure(0.0, 88.3e-6, E_star)["p_full_contact_roughness"] == 0.0
+    from camcontact.errors import InputError
+
+    with pytest.raises(InputError, match="wavelength"):
+        roughness_full_contact_pressure(0.46e-6, 0.0, E_star)
+    with pytest.raises(InputError, match="E_star"):
+        roughness_full_contact_pressure(0.46e-6, 88.3e-6, math.nan)
 
 
 def test_raceway_checks_thesis_and_tresca_rules():

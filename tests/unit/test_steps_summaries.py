@@ -13,6 +13,7 @@ import pytest
 from camcontact.errors import InputError
 from camcontact.steps.summaries import (
     friction_power_mean,
+    friction_torque_mean,
     h_min_cycle,
     jump_margin,
     peak_contact_force,
@@ -48,10 +49,20 @@ def test_h_min_cycle_ignores_angles_without_film():
 
 
 def test_friction_power_mean_of_a_periodic_signal():
-    """P(theta) = 40 (1 + sin theta) W: mean 40 W over the turn."""
-    out = friction_power_mean(40.0 * (1 + np.sin(THETA)), THETA)
+    """P(theta) = 40 (1 + sin theta) W: mean 40 W over the turn, 40 x 2 pi / 100 J per turn at 100 rad/s."""
+    out = friction_power_mean(40.0 * (1 + np.sin(THETA)), 100.0, THETA)
     assert_provides(friction_power_mean, out)
     assert out["friction_power_mean"] == pytest.approx(40.0, rel=1e-12)
+    assert out["friction_energy_per_cycle"] == pytest.approx(40.0 * 2 * math.pi / 100.0, rel=1e-12)
+
+
+def test_friction_torque_mean_and_peak_drive_torque():
+    """T_f = 2 (1 + cos theta) N m: mean 2 N m; drive torque 10 sin theta + T_f peaks near 10.2 N m."""
+    friction = 2.0 * (1 + np.cos(THETA))
+    out = friction_torque_mean(friction, 10.0 * np.sin(THETA) + friction, THETA)
+    assert_provides(friction_torque_mean, out)
+    assert out["friction_torque_mean"] == pytest.approx(2.0, rel=1e-12)
+    assert out["cam_torque_with_friction_max"] == pytest.approx(np.max(10.0 * np.sin(THETA) + friction))
 
 
 def test_wear_rate_mean_and_volume_per_turn():
@@ -67,6 +78,6 @@ def test_means_need_equally_spaced_angles():
     """Unequally spaced angles are not a time mean at constant speed: InputError."""
     theta = np.radians([0.0, 10.0, 30.0, 90.0])
     with pytest.raises(InputError, match="equally spaced"):
-        friction_power_mean(np.ones(4), theta)
+        friction_power_mean(np.ones(4), 100.0, theta)
     with pytest.raises(InputError, match="equally spaced"):
         wear_rate_mean(np.ones(4), 100.0, theta)

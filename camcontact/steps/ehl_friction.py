@@ -1,0 +1,119 @@
+"""EHL friction steps: asperity load sharing (``mixed``), fluid traction from the film's rheology
+(``non_newtonian``, with the contact temperature of ``thermal``) and their sum, per cam angle.
+
+Mixed lubrication (:func:`camcontact.models.mixed_lubrication.mixed_line_contact`): Greenwood & Tripp's
+asperity pressure over the Hertz area and Johnson, Greenwood & Poon's load split, W = W/gamma1 (fluid) +
+W/gamma2 (asperities), the film at the fluid's share. Fluid traction (:mod:`camcontact.contact.fluid_traction`
+through a ``traction_models`` model, :mod:`camcontact.models.traction_fluid`): the shear stress of the central
+film integrated over the Hertz pressure. The friction of a contact (reference ``friction_traction_thermal.md``
+§2): F = mu_b W_asperity sign(u_s) + mu_fluid(u_s) W_fluid. Forces [N], speeds [m/s], films [m].
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..dynamics.roller_follower import slip_grid
+from ..models.mixed_lubrication import mixed_line_contact
+from ..step_graph import step
+
+__all__ = ["COULOMB_SMOOTHING", "FLUID_TRACTION_LIMIT", "ehl_sliding_friction", "fluid_traction_table", "mixed_film_cycle"]
+
+#: the highest fluid traction coefficient measured in EHL contacts is about 0.1 (traction fluids, Saccheto 2008
+#: Tabelas 4.2/4.3; Evans & Johnson 1986): a fluid coefficient above 0.15 flags the rheology as outside its
+#: validity (a Newtonian film at Hertzian pressures, the ``newtonian`` model without a limiting shear stress)
+FLUID_TRACTION_LIMIT = 0.15
+#: sliding speed (fraction of the rolling speed) over which the boundary friction of the asperities reaches
+#: mu_b (a regularised sign: the asperity friction of a rolling contact vanishes without sliding)
+COULOMB_SMOOTHING = 1e-4
+MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity",
+                 "mixed_valid")
+
+
+@step("mixed", provides=MIXED_OUTPUTS, model="greenwood_tripp + johnson_greenwood_poon")
+def mixed_film_cycle(w, R, E_reduced, u_m, eta0, alpha_effective, sigma, asperity_density, asperity_radius,
+                     piezoviscosity):
+    """Per angle: the asperity share of the load [-], the film at the fluid's share h_c [m], Lambda = h_c/sigma,
+    the regime ("boundary", "mixed", "full_film"; "open" where the contact is open), the asperities' capacity
+    A_Hertz p_a(0)/W [-] and whether the model can reach the boundary regime there (``mixed_valid``: capacity
+    >= 1 or Lambda >= 1 — below, the smooth film formulas cannot thin the film enough for the asperities to
+    carry the load, and the asperity share is a lower bound)."""
+    w, R, u_m = (np.asarray(v, dtype=float) for v in (w, R, u_m))
+    n = w.size
+    out = {"asperity_load_fraction": np.zeros(n), "h_c_mixed": np.full(n, np.nan), "Lambda_mixed": np.full(n, np.nan),
+           "lubrication_regime": np.full(n, "open", dtype=object), "asperity_capacity": np.full(n, np.nan),
+           "mixed_valid": np.zeros(n, dtype=bool)}
+    loaded = w > 0.0
+    if loaded.any():
+        result = mixed_line_contact(w[loaded], R[loaded], E_reduced, np.abs(u_m[loaded]), eta0, alpha_effective,
+                                    sigma, asperity_density, asperity_radius, piezoviscosity=piezoviscosity)
+        out["asperity_load_fraction"][loaded] = result["asperity_load_fraction"]
+        out["h_c_mixed"][loaded] = result["h_c"]
+        out["Lambda_mixed"][loaded] = result["lambda_ratio"]
+        out["lubrication_regime"][loaded] = result["regime"]
+        out["asperity_capacity"][loaded] = result["asperity_capacity"]
+        out["mixed_valid"][loaded] = (result["asperity_capacity"] >= 1.0) | (result["lambda_ratio"] >= 1.0)
+    return out
+
+
+def _traction_film(h_c, inputs) -> np.ndarray:
+    """The film the fluid shears: the mixed film where the scene has one, else the central film."""
+    return np.asarray(inputs.get("h_c_mixed", h_c), dtype=float)
+
+
+def _shares(normal_force, inputs) -> tuple[np.ndarray, np.ndarray, float]:
+    fraction = np.asarray(inputs.get("asperity_load_fraction", 0.0), dtype=float)
+    return normal_force * fraction, normal_force * (1.0 - fraction), float(inputs.get("boundary_friction", 0.0))
+
+
+def _fluid(traction_model, p_h, b, h, u_m, lubricant_state, inputs):
+    """The prepared fluid contact per angle (open contacts and angles without a film: p_h = 0)."""
+    usable = (np.asarray(p_h) > 0.0) & np.isfinite(h) & (h > 0.0)
+    return traction_model.contact(np.where(usable, p_h, 0.0), b, np.where(usable, h, 1.0), u_m, lubricant_state,
+                                  inputs.get("effusivity")), usable
+
+
+@step("friction", provides=("friction_force", "friction_coefficient", "friction_power", "fluid_traction_coefficient",
+                            "traction_regime", "traction_temperature_rise", "traction_valid"),
+      model=lambda traction_model: f"{traction_model.name} fluid + boundary")
+def ehl_sliding_friction(traction_model, normal_force, p_h, b, h_c, u_s, u_m, lubricant_state, **inputs):
+    """Friction of a sliding contact at each angle: mu_b W_asperity + mu_fluid(u_s) W_fluid [N] (``inputs``:
+    the mixed step's ``asperity_load_fraction`` and ``h_c_mixed``, the lubricant's ``boundary_friction``, the
+    surfaces' ``effusivity`` for a thermal traction model), its coefficient [-], power F |u_s| [W], the fluid's
+    traction coefficient, regime ("linear", "nonlinear", "plateau", "open"), temperature rise [K] and
+    whether the fluid coefficient is a physical one (<= :data:`FLUID_TRACTION_LIMIT`)."""
+    h = _traction_film(h_c, inputs)
+    contact, usable = _fluid(traction_model, p_h, b, h, u_m, lubricant_state, inputs)
+    fluid = contact.solve(np.where(usable, u_s, 0.0))
+    asperity, carried, mu_b = _shares(normal_force, inputs)
+    force = np.abs(mu_b * asperity * np.sign(u_s) + fluid.coefficient * carried)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mu = np.where(normal_force > 0.0, force / normal_force, 0.0)
+    return {"friction_force": force, "friction_coefficient": mu, "friction_power": force * np.abs(u_s),
+            "fluid_traction_coefficient": np.abs(fluid.coefficient),
+            "traction_regime": np.where(usable, fluid.regime, "open").astype(object),
+            "traction_temperature_rise": np.asarray(fluid.temperature_rise, dtype=float),
+            "traction_valid": np.abs(fluid.coefficient) <= FLUID_TRACTION_LIMIT}
+
+
+@step("traction_curve", provides=("traction_grid", "traction_table"),
+      model=lambda traction_model: f"{traction_model.name} fluid + boundary")
+def fluid_traction_table(traction_model, normal_force, p_h, b, h_c, u_cam, u_m, lubricant_state, **inputs):
+    """The traction force [N] a contact transmits against the sliding speed [m/s] (angles x nodes of
+    :func:`camcontact.dynamics.roller_follower.slip_grid`): mu_b W_asperity (a sign regularised over 1e-4 of
+    the rolling speed) + mu_fluid(u_s) W_fluid. A thermal curve that falls past its peak is held at the peak
+    (the traction available; the roller's implicit spin step needs a non-decreasing curve)."""
+    grid = slip_grid(u_cam)
+    h = _traction_film(h_c, inputs)
+    contact, usable = _fluid(traction_model, p_h[:, None], b[:, None], h[:, None], u_m[:, None], lubricant_state,
+                             inputs)
+    fluid = contact.solve(np.where(usable, grid, 0.0)) if contact.thermal is not None else None
+    mu = fluid.coefficient if fluid is not None else contact.coefficient(np.where(usable, grid, 0.0))
+    asperity, carried, mu_b = _shares(normal_force, inputs)
+    creep = COULOMB_SMOOTHING * np.maximum(np.abs(u_cam), 1e-6)
+    boundary = mu_b * asperity[:, None] * np.clip(grid / creep[:, None], -1.0, 1.0)
+    table = boundary + np.asarray(mu, dtype=float) * carried[:, None]
+    middle = grid.shape[1] // 2  # the node s = 0
+    table[:, middle:] = np.maximum.accumulate(table[:, middle:], axis=1)
+    table[:, :middle + 1] = np.minimum.accumulate(table[:, middle::-1], axis=1)[:, ::-1]
+    return {"traction_grid": grid, "traction_table": table}

@@ -1,0 +1,140 @@
+"""Unit tests of the EHL friction steps (camcontact/steps/ehl_friction.py) with SI floats, and of the cam scene's
+EHL friction effects (``mixed``, ``non_newtonian``, ``thermal``).
+
+Independent references: the mixed step against a direct call of the load-sharing model it wraps; the friction
+of a contact as mu_b W_a + mu_fluid W_f written out with the fluid coefficient of a direct call of the traction
+model; a limiting-shear plateau mu = Lambda_L (tau_L0 = 0) at large slip; the roller's traction table
+non-decreasing and equal to the plateau capacity at its ends.
+"""
+
+import attrs
+import numpy as np
+import pytest
+
+import camcontact as cc
+from camcontact import registry
+from camcontact.models.mixed_lubrication import mixed_line_contact
+from camcontact.scene_file import load_scene
+from camcontact.steps.ehl_friction import (FLUID_TRACTION_LIMIT, ehl_sliding_friction, fluid_traction_table,
+                                           mixed_film_cycle)
+from step_checks import assert_provides
+
+OIL = cc.Lubricant(alpha="2.2e-8 1/Pa", roelands_z=0.68)
+STATE = OIL.state(None)
+E = 210e9 / (1 - 0.3**2)
+W = np.array([0.0, 1.0e5, 2.0e5])  # N/m (first: contact open)
+R = np.full(3, 0.008)
+U = np.array([2.0, 0.05, 3.0])
+
+
+def test_mixed_film_cycle_wraps_the_load_sharing_model_and_marks_open_contacts():
+    out = mixed_film_cycle(W, R, E, U, STATE.eta0, STATE.alpha, 0.3e-6, 0.05 / (6e-6 * 0.3e-6), 6e-6, True)
+    assert_provides(mixed_film_cycle, out)
+    direct = mixed_line_contact(W[1:], R[1:], E, U[1:], STATE.eta0, STATE.alpha, 0.3e-6, 0.05 / (6e-6 * 0.3e-6),
+                                6e-6)
+    np.testing.assert_allclose(out["asperity_load_fraction"][1:], direct["asperity_load_fraction"])
+    np.testing.assert_allclose(out["h_c_mixed"][1:], direct["h_c"])
+    assert out["lubrication_regime"][0] == "open" and out["asperity_load_fraction"][0] == 0.0
+    assert out["asperity_load_fraction"][1] > out["asperity_load_fraction"][2]  # slower: more asperity load
+    assert out["mixed_valid"].dtype == bool and not out["mixed_valid"][0]
+
+
+def _contact():
+    N = np.array([0.0, 1500.0, 3000.0])
+    p_h = np.array([0.0, 0.8e9, 1.1e9])
+    b = np.array([0.0, 1.2e-4, 1.6e-4])
+    h = np.array([np.nan, 0.4e-6, 0.5e-6])
+    return N, p_h, b, h
+
+
+def test_ehl_sliding_friction_is_boundary_plus_fluid():
+    model = registry.get("traction_models", "eyring")
+    N, p_h, b, h = _contact()
+    u_s, u_m = np.array([1.0, 2.0, -3.0]), np.array([1.0, 4.0, 2.0])
+    f_a = np.array([0.0, 0.2, 0.1])
+    out = ehl_sliding_friction(model, N, p_h, b, h, u_s, u_m, STATE, asperity_load_fraction=f_a,
+                               boundary_friction=0.12)
+    assert_provides(ehl_sliding_friction, out)
+    fluid = model.contact(p_h[1:], b[1:], h[1:], u_m[1:], STATE).coefficient(u_s[1:])
+    expected = np.abs(0.12 * f_a[1:] * N[1:] * np.sign(u_s[1:]) + fluid * (1 - f_a[1:]) * N[1:])
+    np.testing.assert_allclose(out["friction_force"][1:], expected, rtol=1e-12)
+    np.testing.assert_allclose(out["friction_power"], out["friction_force"] * np.abs(u_s))
+    assert out["friction_force"][0] == 0.0 and out["traction_regime"][0] == "open"
+    assert out["traction_valid"].all()
+
+
+def test_newtonian_film_without_a_limit_is_flagged_outside_its_validity():
+    model = registry.get("traction_models", "newtonian", limiting_shear_slope=None)
+    N, p_h, b, h = _contact()
+    out = ehl_sliding_friction(model, N, p_h, b, h, np.full(3, 2.0), np.full(3, 3.0), STATE)
+    assert np.all(out["fluid_traction_coefficient"][1:] > FLUID_TRACTION_LIMIT)
+    assert not out["traction_valid"][1:].any()
+
+
+def test_fluid_traction_table_is_monotone_and_reaches_the_plateau():
+    model = registry.get("traction_models", "eyring", limiting_shear_slope=0.075)
+    N, p_h, b, h = _contact()
+    u = np.array([5.0, 5.0, 5.0])
+    out = fluid_traction_table(model, N, p_h, b, h, u, u, STATE, asperity_load_fraction=np.zeros(3),
+                               boundary_friction=0.12)
+    assert_provides(fluid_traction_table, out)
+    table = out["traction_table"]
+    assert np.all(np.diff(table, axis=1) >= 0.0)
+    assert np.all(table[0] == 0.0)  # open contact: no traction
+    # towards the plateau tau = Lambda_L p at the largest slip (S = 3.2): at most Lambda_L, the low-pressure edges
+    # of the contact still below tau_L (Eyring)
+    ratio = table[1:, -1] / N[1:]
+    assert np.all(ratio <= 0.075 * (1 + 1e-9)) and np.all(ratio > 0.07)
+
+
+@pytest.fixture(scope="module")
+def thermal_steel_ls1():
+    scene = load_scene().component
+    steel = cc.Material(E="210 GPa", nu=0.3, density="7850 kg/m^3", specific_heat="460 J/kg/K",
+                        thermal_conductivity="47 W/m/K")
+    oil = attrs.evolve(scene.lubricant, thermoviscous_coefficient="0.03 1/K", thermal_conductivity="0.13 W/m/K")
+    return attrs.evolve(scene, lubricant=oil, cam=attrs.evolve(scene.cam, material=steel),
+                        follower=cc.Follower.flat(material=steel, roughness="0.2 um"))
+
+
+BASE = {"elasticity", "piezoviscosity", "compressibility"}
+OUT = ["cam_angle", "friction_coefficient", "friction_power_mean", "lubrication_regime", "asperity_load_fraction",
+       "traction_regime", "traction_valid", "traction_temperature_rise"]
+
+
+def test_flat_follower_ehl_friction_ladder(thermal_steel_ls1):
+    """Coulomb (0.05) -> Eyring isothermal -> + thermal: the fluid's friction lies in the measured EHL range
+    and the contact temperature lowers it; mixed adds asperity friction where the film is thin (the nose)."""
+    def run(effects, outputs=OUT):
+        return cc.Analysis(thermal_steel_ls1, effects=BASE | effects, outputs=outputs).run()
+
+    eyring = run({"non_newtonian"}, OUT[:3] + OUT[5:])
+    mu = np.asarray(eyring["friction_coefficient"])
+    assert 0.005 < mu.min() and mu.max() <= 0.0751  # bounded by the limiting shear stress Lambda_L = 0.075
+    assert eyring["traction_valid"].all()
+    hot = run({"non_newtonian", "thermal"}, OUT[:3] + OUT[5:])
+    assert hot["friction_power_mean"] < eyring["friction_power_mean"]
+    assert np.max(hot["traction_temperature_rise"]) > 1.0
+    mixed = run({"non_newtonian", "mixed"})
+    regimes = set(mixed["lubrication_regime"])
+    assert {"mixed", "full_film"} <= regimes
+    assert np.max(mixed["asperity_load_fraction"]) > 0.1
+    newtonian = run({"mixed"})
+    assert not np.asarray(newtonian["traction_valid"]).all()  # the Newtonian rung is flagged
+
+
+def test_roller_with_fluid_traction_rolls_at_1000_rpm(thermal_steel_ls1):
+    scene = load_scene().component
+    result = cc.Analysis(scene, effects=BASE | {"non_newtonian"},
+                         outputs=["tangential_force", "traction_available", "roller_slipping"]).run()
+    assert not np.asarray(result["roller_slipping"]).any()
+    # the film can transmit several times what the roller needs (about 0.07 N against at most 8.6 N)
+    assert np.min(result["traction_available"]) > 5 * np.max(np.abs(result["tangential_force"]))
+
+
+def test_thermal_traction_without_material_thermal_data_is_named_up_front():
+    scene = load_scene().component
+    oil = attrs.evolve(scene.lubricant, thermoviscous_coefficient="0.03 1/K", thermal_conductivity="0.13 W/m/K")
+    with pytest.raises(cc.InputError, match="effusivity|specific_heat"):
+        cc.Analysis(attrs.evolve(scene, lubricant=oil), effects=BASE | {"non_newtonian", "thermal"},
+                    outputs=["friction_force"]).run()
