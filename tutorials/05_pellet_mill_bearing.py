@@ -172,7 +172,9 @@ print(pd.concat(reports).T.to_string())
 # proposes FEM for it); the life against the radial load shows how far it has to rise before life
 # becomes an issue.
 # (`slide_roll_ratio=0.02` is an assumed 2 % slip for the friction power and flash temperatures;
-# the load distribution, films and life do not depend on it.)
+# the load distribution, films and life do not depend on it. The raceway friction is the film's Eyring
+# traction, mu 0.004-0.013 at 2 % slip; `models={"friction": "kelley"}` gives the thesis's Benedict-Kelley
+# correlation, mu about 0.065, whose sliding power alone, 376 W, would be nearly the whole bearing loss.)
 #
 # The summary also gives the bearing's frictional moment and power by the SKF model (catalogue
 # "Rolling bearings", series 240 constants) and by Palmgren's M0 + M1 side by side: 14.0-14.6 N m

@@ -21,11 +21,13 @@ A :class:`~camcontact.components.LoadedBearing` becomes the steps
     film of every loaded contact by the film model of the ``film`` slot (a line formula by name,
     default ``"pan_hamrock"``, or ``"multigrid"``), Lambda with the bearing's roughness, regime;
 ``friction``
-    Benedict-Kelley friction at both raceway contacts of every loaded roller with the scene's
-    slide/roll ratio (Delabenetta 2021 Eq. 49), whether each contact lies inside the correlation's
-    validity (``friction_valid_inner`` / ``_outer``, with the reason in ``friction_validity``), the
-    flash temperature of each contact (Eq. 48) and the bearing's sliding friction power
-    sum(mu Q |u1 - u2|);
+    friction at both raceway contacts of every loaded roller with the scene's slide/roll ratio: by default
+    the film's fluid traction (model slot ``friction``: Eyring with the limiting shear stress and the
+    lubricant's rheology, :mod:`camcontact.models.traction_fluid`, or any ``traction_models`` model), which
+    falls to zero with the slip; ``"kelley"``: the Benedict-Kelley correlation (Delabenetta 2021 Eq. 49,
+    which rises as the slip falls); whether each contact lies inside the model's validity
+    (``friction_valid_inner`` / ``_outer``, with the reason in ``friction_validity``), the flash temperature
+    of each contact (Eq. 48) and the bearing's sliding friction power sum(mu Q |u1 - u2|);
 ``friction_moment_skf``, ``friction_moment_palmgren``, ``rolling_resistance``
     the bearing's frictional moment and power by the SKF model (SKF "Rolling bearings" 2012, needs
     ``SphericalRollerBearing.series``) and by Palmgren's M0 + M1, side by side, from the loads, the
@@ -58,7 +60,8 @@ from ..steps.bearing_friction import palmgren_friction_moment, roller_rolling_re
 from ..steps.contact import RACES, roller_hertz
 from ..steps.film import bearing_lubrication, film_parameter, films_of, resolve_film_model, roller_films
 from ..steps.forces import load_distribution
-from ..steps.friction import roller_friction
+from ..steps.ehl_friction import fluid_traction_model
+from ..steps.friction import roller_fluid_friction, roller_friction
 from ..steps.kinematics import bearing_kinematics
 from ..steps.life import bearing_equivalent_load, modified_rating_life, rating_life
 from ..steps.lubricant import lubricant_inputs, lubricant_step
@@ -130,6 +133,13 @@ def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
                           base_oil=getattr(scene.lubricant, "base_oil", None))
 
 
+def friction_step(choice: Any) -> Step:
+    """The raceway contacts' friction: the film's fluid traction (default: Eyring with the limiting shear stress,
+    or the ``traction_models`` model given) or, with ``models={"friction": "kelley"}``, the Benedict–Kelley
+    correlation of Delabenetta (2021) Eq. 49, which rises as the slip falls (valid for 1 %-200 % slide/roll)."""
+    return Step.of(roller_friction if choice == "kelley" else roller_fluid_friction)
+
+
 def moment_steps(scene: LoadedBearing) -> list[Step]:
     """The SKF and Palmgren frictional-moment steps when the lubricant gives its kinematic viscosity at the
     scene's temperature (it needs a density or kinematic data); without it the moments are not offered."""
@@ -143,8 +153,8 @@ def moment_steps(scene: LoadedBearing) -> list[Step]:
 @scene_builder(LoadedBearing)
 def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: frozenset | None) -> SceneGraph:
     """Scene graph of a :class:`~camcontact.components.LoadedBearing` (one variant)."""
-    effects = checked_request("bearing", models, effects, slots=("film", "life"), supported=SUPPORTED_EFFECTS,
-                              default=DEFAULT_EFFECTS)
+    effects = checked_request("bearing", models, effects, slots=("film", "life", "friction"),
+                              supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
     film_model = resolve_film_model(models.get("film", "pan_hamrock"), effects=effects)
     films = films_of(film_model)
     basis = "h_min" if "h_min" in films else "h_c"
@@ -156,10 +166,12 @@ def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: f
         *(Step.of(film_parameter, name=f"lambda_{race}", rename={"h": f"{basis}_{race}", "sigma1": "sigma",
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{race}"})
           for race in RACES),
-        Step.of(bearing_lubrication), Step.of(roller_friction), Step.of(bearing_equivalent_load),
+        Step.of(bearing_lubrication), friction_step(models.get("friction")), Step.of(bearing_equivalent_load),
         Step.of(rating_life), Step.of(modified_rating_life), *moment_steps(scene), Step.of(roller_rolling_resistance),
     ]
-    inputs = {**bearing_inputs(scene, effects), "film_model": film_model, "life_model": models.get("life", "iso281")}
+    inputs = {**bearing_inputs(scene, effects), "film_model": film_model, "life_model": models.get("life", "iso281"),
+              "traction_model": fluid_traction_model(scene.lubricant, effects | {"non_newtonian"},
+                                                     None if models.get("friction") == "kelley" else models.get("friction"))}
     per_index = frozenset(PER_ROLLER & {o for step in steps for o in step.provides})
     return SceneGraph(kind="bearing", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS,
                       input_hints=HINTS, plotter=plot_bearing, effects=effects, index="roller", per_index=per_index)

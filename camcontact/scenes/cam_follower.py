@@ -42,7 +42,8 @@ from ..steps.friction import SlotModel, cam_wear
 from ..steps.kinematics import FOLLOWER_KINEMATICS, follower_motion, motion_continuity
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.roller import ROLLER_OUTPUTS
-from .cam_follower_friction import friction_inputs, friction_steps, traction_model
+from ..steps.ehl_friction import fluid_traction_model
+from .cam_follower_friction import friction_inputs, friction_steps
 from ..steps.summaries import (friction_power_mean, friction_torque_mean, h_min_cycle, jump_margin,
                                peak_contact_force, peak_pressure, wear_rate_mean)
 from .cam_follower_plots import plot_cam_follower
@@ -132,7 +133,7 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
     friction = SlotModel("friction_models", models["friction"], "friction", scene.friction_coefficient,
                          "coulomb_coefficient")
     wear = SlotModel("wear_models", models["wear"], "wear", scene.wear_coefficient, "archard_coefficient")
-    traction = traction_model(scene, effects, models["traction"])
+    traction = fluid_traction_model(scene.lubricant, effects, models["traction"])
     steps = [
         Step.of(follower_motion), Step.of(motion_continuity), Step.of(valve_train_natural_frequency),
         Step.of(minimum_spring_stiffness), Step.of(jump_margin),

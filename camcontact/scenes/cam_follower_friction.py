@@ -24,7 +24,6 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from .. import registry
 from ..components.cam_follower import CamFollower
 from ..errors import InputError
 from ..step_graph import Step
@@ -33,33 +32,12 @@ from ..steps.film import composite_roughness_step
 from ..steps.friction import SlotModel, cam_friction
 from ..steps.roller import cam_friction_torque, coulomb_traction_table, roller_spin, sliding_tangential_force
 
-__all__ = ["ASPERITY_DEFAULTS", "EHL_EFFECTS", "friction_inputs", "friction_steps", "traction_model"]
+__all__ = ["ASPERITY_DEFAULTS", "EHL_EFFECTS", "friction_inputs", "friction_steps"]
 
 #: effects that replace Coulomb friction by the EHL friction of the film
 EHL_EFFECTS = frozenset({"mixed", "non_newtonian"})
 #: (eta beta sigma, sigma / beta) when the scene gives no asperity parameters (see CamFollower)
 ASPERITY_DEFAULTS = (0.05, 0.05)
-
-
-def traction_model(scene: CamFollower, effects: frozenset, spec: Any = None) -> Any:
-    """The fluid traction model: ``spec`` (a name or a model), else ``"eyring"`` with ``non_newtonian`` and
-    ``"newtonian"`` without; parameters from the lubricant where it gives them, thermal with ``thermal``."""
-    lubricant = scene.lubricant
-    if spec is not None and not isinstance(spec, str):
-        return spec
-    name = spec or ("eyring" if "non_newtonian" in effects else "newtonian")
-    parameters: dict[str, Any] = {"thermal": "thermal" in effects}
-    if "non_newtonian" not in effects and spec is None:
-        parameters["limiting_shear_slope"] = None
-    if lubricant is not None:
-        given = {"eyring_stress": lubricant.si.eyring_stress, "limiting_shear_stress": lubricant.si.limiting_shear_stress,
-                 "limiting_shear_slope": lubricant.limiting_shear_slope}
-        parameters |= {k: v for k, v in given.items() if v is not None and (k != "eyring_stress" or name == "eyring")}
-    try:
-        return registry.get("traction_models", name, **parameters)
-    except TypeError as exc:
-        raise InputError(f"traction model {name!r} cannot take {sorted(parameters)} ({exc}); pass a model "
-                         "instance as models={'traction': ...}") from None
 
 
 def friction_inputs(scene: CamFollower, effects: frozenset) -> dict[str, Any]:

@@ -17,6 +17,7 @@ PANELS = {
     "film": ("h_min",),
     "lambda": ("Lambda_min",),
     "friction": ("friction_force",),
+    "stribeck": ("friction_coefficient", "Lambda_min"),
 }
 #: Lambda bands: boundary below 1, mixed between 1 and 3, full film above 3 (Hamrock, Schmid & Jacobson 2004)
 LAMBDA_BANDS = ((0.0, 1.0, "tab:red", "boundary"), (1.0, 3.0, "tab:orange", "mixed"))
@@ -31,6 +32,22 @@ def _lambda_panel(ax, result, degrees) -> None:
     for low, high, colour, name in LAMBDA_BANDS:
         ax.axhspan(low, high, color=colour, alpha=0.12, label=name)
     ax.set(xlabel="cam angle [deg]", ylabel="Λ = h_min / σ [-]", title="film parameter", ylim=(0.0, top))
+    ax.legend(fontsize=8)
+
+
+def _stribeck_panel(ax, result) -> None:
+    """Friction coefficient against the film parameter over the turn (the cycle's Stribeck view), coloured
+    by the lubrication regime where the ``mixed`` effect gives one."""
+    for label, row in zip(result.variants, result.rows):
+        lam = np.asarray(row.get("Lambda_mixed", row["Lambda_min"]), dtype=float)
+        mu = np.asarray(row["friction_coefficient"], dtype=float)
+        regimes = np.asarray(row.get("lubrication_regime", np.full(lam.size, "")), dtype=object)
+        for regime in dict.fromkeys(regimes):
+            chosen = regimes == regime
+            ax.plot(lam[chosen], mu[chosen], ".", label=f"{regime or 'angles'} {label}".strip())
+    for low, high, colour, _ in LAMBDA_BANDS:
+        ax.axvspan(low, high, color=colour, alpha=0.12)
+    ax.set(xlabel="Λ [-]", ylabel="friction coefficient [-]", title="Stribeck view of the turn")
     ax.legend(fontsize=8)
 
 
@@ -93,6 +110,8 @@ def plot_cam_follower(result, *, panels=None, figsize=None):
             _lambda_panel(ax, result, degrees)
         elif panel == "friction":
             _friction_panel(ax, result, degrees)
+        elif panel == "stribeck":
+            _stribeck_panel(ax, result)
         elif panel == "pressure":
             ax.plot(degrees, 1e-6 * np.asarray(row["p_h"]))
             ax.set(xlabel="cam angle [deg]", ylabel="p_h [MPa]", title="Hertz pressure")

@@ -13,11 +13,15 @@ from __future__ import annotations
 
 import numpy as np
 
+from typing import Any
+
+from .. import registry
 from ..dynamics.roller_follower import slip_grid
+from ..errors import InputError
 from ..models.mixed_lubrication import mixed_line_contact
 from ..step_graph import step
 
-__all__ = ["COULOMB_SMOOTHING", "FLUID_TRACTION_LIMIT", "ehl_sliding_friction", "fluid_traction_table", "mixed_film_cycle"]
+__all__ = ["COULOMB_SMOOTHING", "FLUID_TRACTION_LIMIT", "fluid_traction_model", "ehl_sliding_friction", "fluid_traction_table", "mixed_film_cycle"]
 
 #: the highest fluid traction coefficient measured in EHL contacts is about 0.1 (traction fluids, Saccheto 2008
 #: Tabelas 4.2/4.3; Evans & Johnson 1986): a fluid coefficient above 0.15 flags the rheology as outside its
@@ -28,6 +32,28 @@ FLUID_TRACTION_LIMIT = 0.15
 COULOMB_SMOOTHING = 1e-4
 MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity",
                  "mixed_valid")
+
+
+def fluid_traction_model(lubricant: Any, effects: frozenset, spec: Any = None) -> Any:
+    """A scene's fluid traction model: ``spec`` (a model, or a name of the ``traction_models`` family), else
+    ``"eyring"`` with the ``non_newtonian`` effect and ``"newtonian"`` without a limiting shear stress without
+    it; parameters from the lubricant where it gives them (``eyring_stress``, ``limiting_shear_stress``,
+    ``limiting_shear_slope``); thermal (its contact temperature) with the ``thermal`` effect."""
+    if spec is not None and not isinstance(spec, str):
+        return spec
+    name = spec or ("eyring" if "non_newtonian" in effects else "newtonian")
+    parameters: dict[str, Any] = {"thermal": "thermal" in effects}
+    if "non_newtonian" not in effects and spec is None:
+        parameters["limiting_shear_slope"] = None
+    if lubricant is not None:
+        given = {"eyring_stress": lubricant.si.eyring_stress, "limiting_shear_stress": lubricant.si.limiting_shear_stress,
+                 "limiting_shear_slope": lubricant.limiting_shear_slope}
+        parameters |= {k: v for k, v in given.items() if v is not None and (k != "eyring_stress" or name == "eyring")}
+    try:
+        return registry.get("traction_models", name, **parameters)
+    except TypeError as exc:
+        raise InputError(f"traction model {name!r} cannot take {sorted(parameters)} ({exc}); pass a model "
+                         "instance as models={'traction': ...}") from None
 
 
 @step("mixed", provides=MIXED_OUTPUTS, model="greenwood_tripp + johnson_greenwood_poon")

@@ -24,7 +24,8 @@ from ..models.friction import Kelley
 from ..step_graph import step
 from .contact import RACES
 
-__all__ = ["ALIASES", "SlotModel", "cam_friction", "cam_wear", "raceway_kelley_friction", "roller_friction"]
+__all__ = ["ALIASES", "SlotModel", "cam_friction", "cam_wear", "raceway_kelley_friction", "roller_fluid_friction",
+           "roller_friction"]
 
 #: state names the cam scene gives under other names for the friction and wear models
 ALIASES = {"sliding_speed": "u_s"}
@@ -179,5 +180,39 @@ def roller_friction(Q, u_m, slide_roll_ratio, eta0, E_reduced, effusivity, conta
                                              effusivity, effusivity)
             power += float(np.sum(mu[loaded] * Q[loaded])) * abs(u1 - u2)
         out[f"friction_coefficient_{race}"], out[f"flash_temperature_{race}"] = mu, flash
+    out["friction_power"] = power
+    return out
+
+
+@step("friction", provides=("friction_coefficient_inner", "friction_coefficient_outer", "friction_valid_inner",
+                            "friction_valid_outer", "friction_validity", "flash_temperature_inner",
+                            "flash_temperature_outer", "friction_power"),
+      model=lambda traction_model: f"{traction_model.name} fluid traction")
+def roller_fluid_friction(traction_model, Q, u_m, slide_roll_ratio, p_h_inner, p_h_outer, b_inner, b_outer,
+                          h_c_inner, h_c_outer, lubricant_state, E_reduced, effusivity, contact_radii,
+                          roller_length):
+    """Fluid traction of the film at both raceway contacts of every loaded roller at the slide/roll ratio
+    (a ``traction_models`` model over the Hertz pressure with the central film, :mod:`camcontact.models.
+    traction_fluid`: it falls to zero with the slip, as EHL traction does), the flash temperature [K] of each
+    contact (Delabenetta 2021 Eq. 48) and the bearing's sliding friction power sum(mu Q |u1 - u2|) [W]; NaN
+    for unloaded rollers; ``friction_valid_*`` whether the contact is loaded with a physical coefficient."""
+    u1, u2 = u_m * (1 + 0.5 * slide_roll_ratio), u_m * (1 - 0.5 * slide_roll_ratio)
+    loaded = Q > 0.0
+    films = {"inner": (p_h_inner, b_inner, h_c_inner), "outer": (p_h_outer, b_outer, h_c_outer)}
+    out, power = {}, 0.0
+    for race in RACES:
+        mu, flash = np.full(Q.size, np.nan), np.full(Q.size, np.nan)
+        p_h, b, h = (np.asarray(v, dtype=float)[loaded] for v in films[race])
+        if loaded.any():
+            contact = traction_model.contact(p_h, b, h, u_m, lubricant_state, effusivity)
+            mu[loaded] = np.abs(contact.solve(np.full(p_h.size, u1 - u2)).coefficient)
+            for j in np.flatnonzero(loaded):
+                flash[j] = flash_temperature(Q[j] / roller_length, E_reduced, contact_radii[race], mu[j], u1, u2,
+                                             effusivity, effusivity)
+            power += float(np.sum(mu[loaded] * Q[loaded])) * abs(u1 - u2)
+        out[f"friction_coefficient_{race}"], out[f"flash_temperature_{race}"] = mu, flash
+        out[f"friction_valid_{race}"] = loaded & np.isfinite(mu) & (mu <= 0.15)
+    valid = all(out[f"friction_valid_{race}"][loaded].all() for race in RACES)
+    out["friction_validity"] = "ok" if valid else "a loaded contact has no film or an unphysical traction (> 0.15)"
     out["friction_power"] = power
     return out

@@ -93,7 +93,7 @@ def test_missing_and_bad_inputs_are_named():
     with pytest.raises(InputError, match="no entrainment"):
         cc.Analysis(scene(speed="300 rpm"), outputs=["h_min_bearing"]).run()
     with pytest.raises(InputError, match="unknown model slots"):
-        cc.Analysis(scene(), models={"friction": "kelley"})
+        cc.Analysis(scene(), models={"wear": "archard"})
 
 
 def test_kelley_friction_and_flash_temperature_per_contact():
@@ -104,7 +104,7 @@ def test_kelley_friction_and_flash_temperature_per_contact():
                                 thermal_conductivity="42.4 W/(m K)")
     case = scene(bearing=bearing(material=thermal_steel), slide_roll_ratio=0.05)
     result = cc.Analysis(case, outputs=["Q", "u_m", "eta0", "friction_coefficient_inner", "friction_coefficient_outer",
-                                        "flash_temperature_inner", "friction_power"]).run()
+                                        "flash_temperature_inner", "friction_power"], models={"friction": "kelley"}).run()
     Q, u_m, eta = np.asarray(result["Q"]), result["u_m"], result["eta0"]
     u1, u2 = u_m * 1.025, u_m * 0.975
     loaded = Q > 0
@@ -132,7 +132,8 @@ def test_kelley_validity_and_load_zone_in_the_report():
     names = ["Q", "friction_valid_inner", "friction_valid_outer", "friction_validity", "load_zone",
              "last_loaded_azimuth", "loaded_rollers", "delta_r", "delta_a"]
     for slip, inside in ((0.002, False), (0.05, True)):
-        result = cc.Analysis(scene(bearing=bearing(material=thermal_steel), slide_roll_ratio=slip), outputs=names).run()
+        result = cc.Analysis(scene(bearing=bearing(material=thermal_steel), slide_roll_ratio=slip), outputs=names,
+                             models={"friction": "kelley"}).run()
         loaded = np.asarray(result["Q"]) > 0
         frame = result.to_frame()
         for race in ("inner", "outer"):
@@ -147,6 +148,31 @@ def test_kelley_validity_and_load_zone_in_the_report():
     assert result["loaded_rollers"] == float(loaded.sum())
     summary = result.summary_frame()
     assert summary["load_zone [deg]"].iloc[0] == pytest.approx(math.degrees(max(zones)), rel=1e-12)
+
+
+def test_fluid_traction_is_the_default_bearing_friction_and_falls_with_the_slip():
+    """Issue 16 error 4: EHL traction falls to zero with the slip where Kelley's correlation rises; the default
+    raceway friction is the film's Eyring traction (limiting shear stress), equal to a direct call of the model
+    at each contact, valid at 0.2 % slip."""
+    from camcontact import registry
+
+    thermal_steel = cc.Material(E="210 GPa", nu=0.3, density="7810 kg/m^3", specific_heat="464 J/(kg K)",
+                                thermal_conductivity="42.4 W/(m K)")
+    names = ["Q", "u_m", "p_h_inner", "b_inner", "h_c_inner", "friction_coefficient_inner", "friction_valid_inner"]
+    mus = {}
+    for slip in (0.002, 0.05):
+        case = scene(bearing=bearing(material=thermal_steel), slide_roll_ratio=slip)
+        result = cc.Analysis(case, outputs=names).run()
+        loaded = np.asarray(result["Q"]) > 0
+        mu = np.asarray(result["friction_coefficient_inner"])[loaded]
+        state = case.lubricant.state(case.si.temperature)
+        direct = registry.get("traction_models", "eyring").contact(
+            np.asarray(result["p_h_inner"])[loaded], np.asarray(result["b_inner"])[loaded],
+            np.asarray(result["h_c_inner"])[loaded], result["u_m"], state).coefficient(slip * result["u_m"])
+        np.testing.assert_allclose(mu, np.abs(direct), rtol=1e-12)
+        assert np.asarray(result["friction_valid_inner"])[loaded].all()
+        mus[slip] = mu
+    assert np.all(mus[0.002] < mus[0.05]) and np.all(mus[0.05] < 0.08)
 
 
 def test_numerical_film_in_the_bearing_scene():

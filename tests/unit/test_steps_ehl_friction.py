@@ -138,3 +138,21 @@ def test_thermal_traction_without_material_thermal_data_is_named_up_front():
     with pytest.raises(cc.InputError, match="effusivity|specific_heat"):
         cc.Analysis(attrs.evolve(scene, lubricant=oil), effects=BASE | {"non_newtonian", "thermal"},
                     outputs=["friction_force"]).run()
+
+
+def test_traction_curve_plot_marks_regimes_and_the_thermal_fall():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from camcontact.scenes.traction_curve_plot import plot_traction_curve
+
+    oil = cc.Lubricant(alpha="2.2e-8 1/Pa", roelands_z=0.68, thermoviscous_coefficient="0.03 1/K",
+                       thermal_conductivity="0.13 W/m/K")
+    models = [registry.get("traction_models", "eyring"), registry.get("traction_models", "eyring", thermal=True)]
+    fig = plot_traction_curve(models, p_h=1.0e9, b=2e-4, h_c=0.5e-6, u_m=5.0, lubricant_state=oil.state(None),
+                              effusivity=1.3e4, slide_roll=np.linspace(0.0, 0.5, 101))
+    lines = fig.axes[0].get_lines()
+    isothermal, thermal = lines[0].get_ydata(), next(l for l in lines if l.get_label() == "eyring thermal").get_ydata()
+    assert np.all(np.diff(isothermal) >= 0) and thermal[-1] < thermal.max()  # the thermal plateau falls
+    with pytest.raises(cc.InputError, match="traction models"):
+        plot_traction_curve("eyring", p_h=1e9, b=2e-4, h_c=5e-7, u_m=5.0, lubricant_state=oil.state(None))

@@ -12,6 +12,8 @@ import math
 import numpy as np
 import pytest
 
+import camcontact as cc
+
 from camcontact.errors import InputError
 from camcontact.models.base import FrictionModel
 from camcontact.steps.friction import (
@@ -190,3 +192,29 @@ def test_roller_friction_flags_contacts_below_the_correlations_slip_range():
     np.testing.assert_array_equal(usual["friction_valid_inner"], [True, False, True])
     assert usual["friction_validity"] == "ok"
     assert np.all(low["friction_coefficient_outer"][[0, 2]] > usual["friction_coefficient_outer"][[0, 2]])
+
+
+def test_roller_fluid_friction_per_contact_against_the_traction_model():
+    """Each loaded contact's coefficient is the traction model's at u1 - u2 = S u_m (a direct call), the flash
+    temperature Blok's with that mu, the power sum(mu Q |u1 - u2|); unloaded rollers NaN and not valid."""
+    from camcontact import registry
+    from camcontact.contact.contact_temperature import flash_temperature as blok
+    from camcontact.steps.friction import roller_fluid_friction
+
+    model = registry.get("traction_models", "eyring")
+    state = cc.Lubricant(alpha="2.2e-8 1/Pa", roelands_z=0.68).state(None)
+    Q = np.array([0.0, 20e3, 10e3])
+    p_h, b, h = np.array([np.nan, 1.2e9, 0.9e9]), np.array([np.nan, 2e-4, 1.5e-4]), np.array([np.nan, 4e-7, 4.5e-7])
+    radii = {"inner": 0.03, "outer": 0.1}
+    out = roller_fluid_friction(model, Q, 4.0, 0.02, p_h, p_h * 0.8, b, b * 1.2, h, h, state, 2.3e11, 1.2e4, radii,
+                                0.04)
+    assert_provides(roller_fluid_friction, out)
+    mu = np.abs(model.contact(p_h[1:], b[1:], h[1:], 4.0, state).coefficient(0.02 * 4.0))
+    np.testing.assert_allclose(out["friction_coefficient_inner"][1:], mu, rtol=1e-12)
+    assert np.isnan(out["friction_coefficient_inner"][0]) and not out["friction_valid_inner"][0]
+    assert out["friction_valid_inner"][1:].all() and out["friction_validity"] == "ok"
+    u1, u2 = 4.0 * 1.01, 4.0 * 0.99
+    assert out["flash_temperature_inner"][1] == pytest.approx(blok(Q[1] / 0.04, 2.3e11, 0.03, mu[0], u1, u2, 1.2e4,
+                                                                   1.2e4), rel=1e-12)
+    total = sum(np.nansum(out[f"friction_coefficient_{race}"] * Q) for race in ("inner", "outer")) * (u1 - u2)
+    assert out["friction_power"] == pytest.approx(total, rel=1e-12)
