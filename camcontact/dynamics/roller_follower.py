@@ -30,7 +30,7 @@ import numpy as np
 from ..errors import InputError
 from . import _roller_kernels
 
-__all__ = ["RollerCycle", "pin_friction_torque", "required_traction", "roller_cycle", "slip_grid",
+__all__ = ["RollerCycle", "check_full_turn", "full_turn", "pin_friction_torque", "required_traction", "roller_cycle", "slip_grid",
            "solid_roller_inertia"]
 
 #: sliding speeds of the traction table as fractions of the rolling speed (both signs and 0)
@@ -56,12 +56,19 @@ def _periodic_derivative(values: np.ndarray, theta: np.ndarray) -> np.ndarray:
     return (np.roll(values, -1) - np.roll(values, 1)) / (2.0 * step)
 
 
+def full_turn(theta) -> bool:
+    """Whether the cam angles ``theta`` [rad] sample one full turn uniformly with at least 36 angles."""
+    theta = np.atleast_1d(np.asarray(theta, dtype=float))
+    n = theta.size
+    expected = theta[0] + np.arange(n) * (2.0 * math.pi / max(n, 1))
+    return n >= 36 and bool(np.allclose(theta, expected, rtol=0.0, atol=1e-9))
+
+
 def check_full_turn(theta) -> np.ndarray:
     """``theta`` [rad] as an array when it samples one full turn uniformly; InputError otherwise."""
     theta = np.asarray(theta, dtype=float)
     n = theta.size
-    expected = theta[0] + np.arange(n) * (2.0 * math.pi / max(n, 1))
-    if n < 36 or not np.allclose(theta, expected, rtol=0.0, atol=1e-9):
+    if not full_turn(theta):
         raise InputError(
             f"the roller's spin dynamics integrate over the cam turn: the cam angles must sample a full turn "
             f"uniformly with at least 36 angles (got {n} angles); set CamFollower.angle_step instead of angles, "

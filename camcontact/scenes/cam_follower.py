@@ -42,6 +42,7 @@ from ..steps.friction import SlotModel, cam_wear
 from ..steps.kinematics import FOLLOWER_KINEMATICS, follower_motion, motion_continuity
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.roller import ROLLER_OUTPUTS
+from ..dynamics.roller_follower import full_turn
 from ..steps.ehl_friction import fluid_traction_model
 from .cam_follower_friction import friction_inputs, friction_steps
 from ..steps.summaries import (friction_power_mean, friction_torque_mean, h_min_cycle, jump_margin,
@@ -81,6 +82,9 @@ HINTS = {
                            "'ferrarese_uehara', k_L=2)}",
     "traction_limit_coefficient": "give CamFollower.friction_coefficient (the roller's traction limit mu N), or "
                                   "switch the 'non_newtonian' effect on for fluid traction",
+    "roller_inertia": "the roller's spin dynamics integrate over a cam turn: sample the turn uniformly "
+                      "(CamFollower.angle_step, not angles), or choose a friction model, e.g. "
+                      "models={'friction': 'coulomb'}",
     "effusivity": "give the cam and follower materials density, specific_heat and thermal_conductivity (the "
                   "thermal traction's flash temperature needs them)",
     "sigma": "give the cam and the follower a roughness (the 'mixed' effect needs the composite roughness)",
@@ -105,8 +109,10 @@ def cam_follower_inputs(scene: CamFollower, effects: frozenset) -> dict[str, Any
         **lubricant_inputs(scene.lubricant, scene.si.temperature),
     }
     if follower.kind == "roller":
-        inputs |= {"roller_radius": follower.si.roller_radius, "roller_inertia": follower.roller_inertia_si(cam.si.width),
-                   "pin_radius": follower.pin_radius_si, "pin_friction_coefficient": follower.pin_friction_coefficient}
+        inputs |= {"roller_radius": follower.si.roller_radius, "pin_radius": follower.pin_radius_si,
+                   "pin_friction_coefficient": follower.pin_friction_coefficient}
+        if full_turn(scene.cam_angles):  # the spin dynamics integrate over the turn (else named up front)
+            inputs["roller_inertia"] = follower.roller_inertia_si(cam.si.width)
     return inputs | given(hardness=cam.material.si.hardness, sigma1=cam.si.roughness, sigma2=follower.si.roughness,
                           traction_limit_coefficient=scene.friction_coefficient)
 

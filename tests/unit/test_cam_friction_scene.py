@@ -95,3 +95,13 @@ def test_roller_fields_are_validated():
         cc.Follower.flat(material=steel, roller_inertia="1e-6 kg*m^2")
     follower = cc.Follower.roller(radius="10 mm", material=steel, roller_inertia="2e-6 kg*m^2")
     assert follower.roller_inertia_si(0.015) == pytest.approx(2e-6)
+
+
+def test_roller_dynamics_outputs_need_a_full_turn_and_say_so(ls1):
+    few = attrs.evolve(ls1, angles=cc.Q_(np.arange(0.0, 181.0, 15.0), "deg"))
+    result = cc.Analysis(few).run()  # the default report leaves the roller's friction out, keeps the rest
+    assert "friction_force" not in result.outputs and "h_min" in result.outputs
+    with pytest.raises(cc.InputError, match="angle_step"):
+        cc.Analysis(few, outputs=["friction_force"])
+    coulomb = cc.Analysis(few, outputs=["friction_force"], models={"friction": "coulomb"}).run()
+    assert np.asarray(coulomb["friction_force"]).size == 13
