@@ -66,6 +66,7 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("h_min_isothermal", "m", "um", "isothermal minimum film thickness"),
         _q("thermal_loading", "", "", "thermal loading parameter beta eta0 (u1+u2)^2/k"),
         _q("thermal_loading_m", "", "", "thermal loading on the mean speed beta eta0 u_m^2 / k (Murch & Wilson)"),
+        _q("thermal_valid", None, None, "True where the inlet thermal factor's fit applies (|u1-u2| <= |u1+u2|)"),
         _q("thermal_factor", "", "", "inlet shear-heating film reduction factor phi_T"),
         _q("h_c", "m", "um", "central film thickness"),
         _q("h_min", "m", "um", "minimum film thickness"),

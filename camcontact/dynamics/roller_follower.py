@@ -5,14 +5,17 @@ roller and overcomes its pin friction and rolling resistance. With the roller's 
 the state (Duffy 1993, SAE 930691; Chiu 1992, SAE 921693; reference ``friction_traction_thermal.md`` §5)
 
 .. math::
-    I_r \\dot\\omega_r = R_f F_t(u_s) - T_{pin} - R_f F_{rr}, \\qquad u_s = u_{cam} - R_f \\omega_r,
+    I_r \\dot\\omega_r = R_f F_t(u_s) - T_{pin} - R_f F_{rr}, \\qquad
+    u_s = u_{cam} - R_f (\\omega_r + \\dot A_p),
     \\qquad T_{pin} = \\mu_{pin} N r_{pin}
 
 with F_t the traction force the contact transmits at the sliding speed u_s (from a traction model, or a
 Coulomb limit mu N), the pin (needle or bush) friction torque T_pin and the rolling-resistance force
-F_rr. Where the roller rolls, F_t equals the no-slip requirement
+F_rr; u_cam is the cam's surface speed relative to the contact point, which itself travels round the
+roller's rim at the rate of the pressure angle A_p (:func:`rim_rate`). Where the roller rolls
+(omega_r = u_roll / R_f, u_roll = u_cam - R_f dA_p/dt), F_t equals the no-slip requirement
 
-.. math:: F_{req} = \\frac{I_r}{R_f}\\frac{d}{dt}\\left(\\frac{u_{cam}}{R_f}\\right) + \\frac{T_{pin}}{R_f} + F_{rr}
+.. math:: F_{req} = \\frac{I_r}{R_f}\\frac{d}{dt}\\left(\\frac{u_{roll}}{R_f}\\right) + \\frac{T_{pin}}{R_f} + F_{rr}
 
 (:func:`required_traction`, the independent estimate); where F_req exceeds the traction available the
 roller slips. :func:`roller_cycle` integrates the equation over periodic cam turns (implicit Euler,
@@ -30,7 +33,7 @@ import numpy as np
 from ..errors import InputError
 from . import _roller_kernels
 
-__all__ = ["RollerCycle", "check_full_turn", "full_turn", "pin_friction_torque", "required_traction", "roller_cycle", "slip_grid",
+__all__ = ["RollerCycle", "check_full_turn", "full_turn", "rim_rate", "pin_friction_torque", "required_traction", "roller_cycle", "slip_grid",
            "solid_roller_inertia"]
 
 #: sliding speeds of the traction table as fractions of the rolling speed (both signs and 0)
@@ -76,9 +79,19 @@ def check_full_turn(theta) -> np.ndarray:
     return theta
 
 
+def rim_rate(theta, angular_speed, pressure_angle):
+    """dA_p/dt [rad/s]: the rate at which the contact point travels round the roller's rim (the pressure
+    angle's rate over a full turn of cam angles ``theta`` [rad] at cam speed ``angular_speed`` [rad/s]). In
+    pure rolling the roller spins at omega_r = u_cam / R_f - dA_p/dt, u_cam relative to the contact point."""
+    theta = check_full_turn(theta)
+    angle = np.unwrap(np.asarray(pressure_angle, dtype=float))
+    return np.asarray(angular_speed, dtype=float) * _periodic_derivative(angle, theta)
+
+
 def required_traction(theta, angular_speed, u_cam, pin_torque, radius: float, inertia: float, resistance=0.0):
     """The tangential force [N] that keeps the roller rolling, F_req (module docstring), over a full turn
-    of cam angles ``theta`` [rad] at cam speed ``angular_speed`` [rad/s]; d/dt = omega d/dtheta."""
+    of cam angles ``theta`` [rad] at cam speed ``angular_speed`` [rad/s]; ``u_cam`` [m/s] is the roller's
+    pure-rolling surface speed u_roll; d/dt = omega d/dtheta."""
     theta = check_full_turn(theta)
     spin_rate = np.asarray(angular_speed, dtype=float) * _periodic_derivative(np.asarray(u_cam, float) / radius,
                                                                                theta)
@@ -119,7 +132,8 @@ def roller_cycle(theta, angular_speed, u_cam, pin_torque, grid, force, *, radius
     angular_speed : array
         Cam speed [rad/s] at each angle.
     u_cam : array
-        Cam surface speed relative to the contact point [m/s] (the roller's surface speed in pure rolling).
+        The roller's surface speed in pure rolling, u_roll = u_cam - R_f dA_p/dt [m/s] (the drive: the
+        sliding speed is u_roll - R_f omega_r).
     pin_torque : array
         Pin friction torque [N m] (opposes the roller's spin).
     grid, force : arrays (angles x nodes)

@@ -58,7 +58,7 @@ DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard
                   "traction": None}
 PER_ANGLE = frozenset((
     "cam_angle", *FOLLOWER_KINEMATICS, *FORCES_1DOF, "normal_force", "w", "b", "p_h", "approach", "U", "G", "W", "M",
-    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "film_regime", "H0", "H_min", "H_c", "spike_pressure", "Lambda_min", "friction_force",
+    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_regime", "H0", "H_min", "H_c", "spike_pressure", "Lambda_min", "friction_force",
     "friction_coefficient", "friction_power", "wear_rate", "contact_open", "tangential_force", "friction_torque",
     "cam_torque_with_friction", "friction_arm", *(q for q in ROLLER_OUTPUTS if q != "roller_cycle"),
     "asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity", "mixed_valid",
@@ -82,8 +82,8 @@ HINTS = {
                            "'ferrarese_uehara', k_L=2)}",
     "traction_limit_coefficient": "give CamFollower.friction_coefficient (the roller's traction limit mu N), or "
                                   "switch the 'non_newtonian' effect on for fluid traction",
-    "roller_inertia": "the roller's spin dynamics integrate over a cam turn: sample the turn uniformly "
-                      "(CamFollower.angle_step, not angles), or choose a friction model, e.g. "
+    "roller_inertia": "the roller's spin dynamics integrate over a cam turn: sample the turn uniformly with at "
+                      "least 36 angles (CamFollower.angle_step <= 10 deg, not angles), or choose a friction model, e.g. "
                       "models={'friction': 'coulomb'}",
     "effusivity": "give the cam and follower materials density, specific_heat and thermal_conductivity (the "
                   "thermal traction's flash temperature needs them)",

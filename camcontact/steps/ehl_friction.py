@@ -94,9 +94,9 @@ def _shares(normal_force, inputs) -> tuple[np.ndarray, np.ndarray, float]:
 
 def _fluid(traction_model, p_h, b, h, u_m, lubricant_state, inputs):
     """The prepared fluid contact per angle (open contacts and angles without a film: p_h = 0)."""
-    usable = (np.asarray(p_h) > 0.0) & np.isfinite(h) & (h > 0.0)
-    return traction_model.contact(np.where(usable, p_h, 0.0), b, np.where(usable, h, 1.0), u_m, lubricant_state,
-                                  inputs.get("effusivity")), usable
+    usable = (np.asarray(p_h) > 0.0) & np.isfinite(h) & (h > 0.0) & (np.asarray(b) > 0.0)
+    return traction_model.contact(np.where(usable, p_h, 0.0), np.where(usable, b, 1.0), np.where(usable, h, 1.0),
+                                  np.where(usable, u_m, 1.0), lubricant_state, inputs.get("effusivity")), usable
 
 
 @step("friction", provides=("friction_force", "friction_coefficient", "friction_power", "fluid_traction_coefficient",

@@ -271,14 +271,21 @@ def solve_numerically(model, state, previous):
     return (best, None) if best is not None else (None, failure)
 
 
-@step("thermal", provides=("thermal_loading_m", "thermal_factor"), model=lambda thermal_model: thermal_model,
+@step("thermal", provides=("thermal_loading_m", "thermal_factor", "thermal_valid"), model=lambda thermal_model: thermal_model,
       check=check_thermal_data)
 def cycle_inlet_thermal(thermal_model, u_cam, u_follower, thermoviscous_coefficient, eta0, lubricant_conductivity,
                         p_h, E_reduced):
     """The thermal loading on the mean speed L_m = beta eta0 u_m^2 / k [-] and the inlet shear-heating
     factor phi_T [-] of the film at every cam angle, by ``thermal_model`` (a factor of
     :data:`camcontact.models.film_thermal.THERMAL_FACTORS`, with the slide-to-roll term where it has one;
-    phi_T = 1 where the entrainment reverses)."""
+    phi_T = 1 where the entrainment reverses) and whether the angle lies inside the fits' range: the surfaces
+    move the same way, Z = |u1 - u2|/|u1 + u2| <= 1 (simple sliding, the largest slip of the sources'
+    analyses; a flat face near its entrainment reversal lies beyond it)."""
     L_m, phi = thermal_reduction(thermal_model, thermoviscous_coefficient, eta0, u_cam, u_follower,
                                  lubricant_conductivity, p_h, E_reduced)
-    return {"thermal_loading_m": np.asarray(L_m, dtype=float), "thermal_factor": np.asarray(phi, dtype=float)}
+    total = np.abs(np.asarray(u_cam, dtype=float) + u_follower)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ratio = np.where(total > 0.0, np.abs(np.asarray(u_cam, dtype=float) - u_follower) / total, np.inf)
+    phi = np.asarray(phi, dtype=float)
+    return {"thermal_loading_m": np.asarray(L_m, dtype=float), "thermal_factor": phi,
+            "thermal_valid": np.isfinite(phi) & (ratio <= 1.0)}

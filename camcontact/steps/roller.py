@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..dynamics.roller_follower import (pin_friction_torque, required_traction, roller_cycle, slip_grid)
+from ..dynamics.roller_follower import pin_friction_torque, required_traction, rim_rate, roller_cycle, slip_grid
 from ..errors import InputError
 from ..step_graph import step
 
@@ -53,8 +53,8 @@ def check_roller(roller_radius, roller_inertia) -> None:
 
 @step("roller_dynamics", provides=ROLLER_OUTPUTS, model="spin ODE (implicit Euler)",
       check=check_roller)
-def roller_spin(cam_angle, angular_speed, u_cam, normal_force, traction_grid, traction_table, roller_radius,
-                roller_inertia, pin_radius, pin_friction_coefficient):
+def roller_spin(cam_angle, angular_speed, u_cam, pressure_angle, normal_force, traction_grid, traction_table,
+                roller_radius, roller_inertia, pin_radius, pin_friction_coefficient):
     """The roller's angular speed [rad/s], slide-to-roll ratio u_s/u_m [-] and slipping flag (|u_s/u_m| > 1 %, or
     the traction at 99 % of what the contact can transmit),
     whether the no-slip requirement exceeds the traction available, the tangential
@@ -63,20 +63,22 @@ def roller_spin(cam_angle, angular_speed, u_cam, normal_force, traction_grid, tr
     |F_t| [N], coefficient |F_t|/N [-] and the power lost at the contact and the pin [W], over a periodic
     cam turn (:func:`camcontact.dynamics.roller_follower.roller_cycle`)."""
     pin = pin_friction_torque(normal_force, pin_friction_coefficient, pin_radius)
-    cycle = roller_cycle(cam_angle, angular_speed, u_cam, pin, traction_grid, traction_table,
+    # the contact point travels round the roller's rim at dA_p/dt: in pure rolling R omega_r = u_cam - R dA_p/dt
+    rolling = u_cam - roller_radius * rim_rate(cam_angle, angular_speed, pressure_angle)
+    cycle = roller_cycle(cam_angle, angular_speed, rolling, pin, traction_grid, traction_table,
                          radius=roller_radius, inertia=roller_inertia)
-    required = required_traction(cam_angle, angular_speed, u_cam, pin, roller_radius, roller_inertia)
+    required = required_traction(cam_angle, angular_speed, rolling, pin, roller_radius, roller_inertia)
     available = np.where(required >= 0.0, traction_table[:, -1], -traction_table[:, 0])
     limit = np.where(cycle.traction_force >= 0.0, traction_table[:, -1], -traction_table[:, 0])
     saturated = np.abs(cycle.traction_force) >= SATURATION * limit
-    u_roll = 0.5 * (u_cam + roller_radius * cycle.roller_speed)
+    u_roll = u_cam - 0.5 * cycle.sliding_speed  # (u_cam + u_roller)/2, both relative to the contact point
     with np.errstate(divide="ignore", invalid="ignore"):
         slip = np.where(u_roll != 0.0, cycle.sliding_speed / u_roll, 0.0)
         mu = np.where(normal_force > 0.0, np.abs(cycle.traction_force) / normal_force, 0.0)
     power = np.abs(cycle.traction_force * cycle.sliding_speed) + pin * np.abs(cycle.roller_speed)
     return {"roller_speed": cycle.roller_speed, "roller_slip": slip,
             "roller_slipping": ((np.abs(slip) > SLIP_THRESHOLD) | saturated) & (normal_force > 0.0),
-            "traction_exceeded": np.abs(required) > available,
+            "traction_exceeded": (np.abs(required) > available) & (normal_force > 0.0),
             "tangential_force": cycle.traction_force, "traction_required": required, "traction_available": available,
             "pin_torque": pin, "friction_force": np.abs(cycle.traction_force), "friction_coefficient": mu,
             "friction_power": power, "roller_cycle": cycle}
@@ -92,7 +94,9 @@ def sliding_tangential_force(friction_force, u_s):
 @step("cam_torque", provides=("friction_torque", "cam_torque_with_friction", "friction_arm"))
 def cam_friction_torque(tangential_force, cam_torque, lift, pressure_angle, geometry):
     """The camshaft torque of the tangential force, T_f = F_t p [N m], with the distance p [m] of the
-    contact's tangent from the cam axis (module docstring), and the cam torque with it [N m]."""
+    contact's tangent from the cam axis (module docstring), and the cam torque with it [N m]. The normal
+    force is taken from the axial force alone (F / cos A_p): the tangential force's own axial component
+    F_t sin A_p of a roller (at most a few per cent of N) is left out of the force balance."""
     position = geometry.base_distance + lift
     if geometry.kind == "flat":
         arm = position

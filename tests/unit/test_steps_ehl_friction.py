@@ -156,3 +156,17 @@ def test_traction_curve_plot_marks_regimes_and_the_thermal_fall():
     assert np.all(np.diff(isothermal) >= 0) and thermal[-1] < thermal.max()  # the thermal plateau falls
     with pytest.raises(cc.InputError, match="traction models"):
         plot_traction_curve("eyring", p_h=1e9, b=2e-4, h_c=5e-7, u_m=5.0, lubricant_state=oil.state(None))
+
+
+def test_a_jumping_valve_train_with_every_friction_effect_keeps_its_open_angles_finite(thermal_steel_ls1):
+    """Contact lost (a weak spring at 3000 rpm): the open angles carry no friction, no NaN, no error."""
+    jumping = attrs.evolve(thermal_steel_ls1, speed="3000 rpm",
+                           valve_train=attrs.evolve(thermal_steel_ls1.valve_train, preload="100 N"))
+    for follower in (jumping.follower, load_scene().component.follower):
+        case = attrs.evolve(jumping, follower=attrs.evolve(follower, material=jumping.cam.material))
+        result = cc.Analysis(case, effects=BASE | {"non_newtonian", "thermal", "mixed"},
+                             outputs=["contact_open", "friction_force", "friction_torque"]).run()
+        open_ = np.asarray(result["contact_open"])
+        assert open_.any()
+        force = np.asarray(result["friction_force"])
+        assert np.all(np.isfinite(force)) and np.all(force[open_] == 0.0)

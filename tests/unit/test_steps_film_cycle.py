@@ -200,3 +200,4 @@ def test_cycle_inlet_thermal_per_angle_with_reversal():
     assert out["thermal_factor"][0] == pytest.approx(1 / (1 + 0.241 * L[0] ** 0.64), rel=1e-12)
     assert out["thermal_factor"][1] == pytest.approx(1 / (1 + 0.241 * (1 + 14.8 * Z[1] ** 0.83) * L[1] ** 0.64))
     assert out["thermal_factor"][2] == 1.0  # u1 + u2 = 0: no entrainment, no inlet heating
+    np.testing.assert_array_equal(out["thermal_valid"], [True, False, False])  # Z = 0, 3, inf

@@ -84,7 +84,7 @@ def test_scarce_traction_slips_and_caps_the_force():
     limit = 0.002  # mu N = 4 N, below the ~ 27 N the roller needs
     out = coulomb_traction_table(N, u_cam, limit)
     assert_provides(coulomb_traction_table, out)
-    spin = roller_spin(THETA, np.full(N_ANGLES, OMEGA), u_cam, N, out["traction_grid"], out["traction_table"], R_F,
+    spin = roller_spin(THETA, np.full(N_ANGLES, OMEGA), u_cam, np.zeros(N_ANGLES), N, out["traction_grid"], out["traction_table"], R_F,
                        INERTIA, 0.004, 0.0025)
     assert_provides(roller_spin, spin)
     assert np.max(np.abs(spin["tangential_force"])) <= limit * 2000.0 * (1 + 1e-12)
@@ -98,7 +98,7 @@ def test_scarce_traction_slips_and_caps_the_force():
 def test_roller_spin_without_slip_reports_zero_slip_and_the_pin_loss():
     u_cam, N = _drive(0.0)  # constant surface speed: only the pin torque is needed
     grid = coulomb_traction_table(N, u_cam, 0.05)
-    spin = roller_spin(THETA, np.full(N_ANGLES, OMEGA), u_cam, N, grid["traction_grid"], grid["traction_table"], R_F,
+    spin = roller_spin(THETA, np.full(N_ANGLES, OMEGA), u_cam, np.zeros(N_ANGLES), N, grid["traction_grid"], grid["traction_table"], R_F,
                        INERTIA, 0.004, 0.0025)
     pin = 0.0025 * 2000.0 * 0.004
     np.testing.assert_allclose(spin["tangential_force"], pin / R_F, rtol=1e-6)
@@ -140,3 +140,19 @@ def test_cam_friction_torque_flat_and_roller_arms():
     normal = np.array([-math.sin(A), math.cos(A)])
     assert out["friction_arm"][0] == pytest.approx(float(contact @ normal), rel=1e-12)
     assert out["friction_torque"][0] == pytest.approx(10.0 * float(contact @ normal), rel=1e-12)
+
+
+def test_the_contact_point_travelling_round_the_rim_changes_the_rolling_spin():
+    """A roller whose contact point travels round its rim at dA/dt = omega dA/dtheta rolls at
+    omega_r = u_cam / R - dA/dt: with a constant u_cam and A = 0.3 sin(theta) the spin follows the rim rate."""
+    from camcontact.dynamics.roller_follower import rim_rate
+
+    u_cam, N = _drive(0.0)
+    A = 0.3 * np.sin(THETA)
+    np.testing.assert_allclose(rim_rate(THETA, OMEGA, A), OMEGA * 0.3 * np.cos(THETA), rtol=1e-4, atol=1e-9)
+    grid = coulomb_traction_table(N, u_cam, 0.1)
+    spin = roller_spin(THETA, np.full(N_ANGLES, OMEGA), u_cam, A, N, grid["traction_grid"], grid["traction_table"],
+                       R_F, INERTIA, 0.004, 0.0025)
+    expected = u_cam / R_F - OMEGA * 0.3 * np.cos(THETA)
+    np.testing.assert_allclose(spin["roller_speed"], expected, rtol=2e-3)
+    assert np.max(np.abs(spin["roller_slip"])) < 1e-3
