@@ -33,9 +33,12 @@ import numpy as np
 from ..errors import InputError
 from . import _roller_kernels
 
-__all__ = ["RollerCycle", "check_full_turn", "full_turn", "rim_rate", "pin_friction_torque", "required_traction", "roller_cycle", "slip_grid",
+__all__ = ["COULOMB_CREEP", "RollerCycle", "check_full_turn", "coulomb_table", "full_turn", "rim_rate", "pin_friction_torque", "required_traction", "roller_cycle", "slip_grid",
            "solid_roller_inertia"]
 
+#: creep (fraction of the rolling speed) at which a Coulomb-limited contact reaches its limit: a regularised
+#: stick, so that the traction table is single-valued
+COULOMB_CREEP = 1e-4
 #: sliding speeds of the traction table as fractions of the rolling speed (both signs and 0)
 SLIP_FRACTIONS = np.concatenate((-np.logspace(0.5, -7, 48), [0.0], np.logspace(-7, 0.5, 48)))
 
@@ -103,6 +106,13 @@ def slip_grid(u_roll) -> np.ndarray:
     (angles x nodes; at least 1e-6 m/s of scale where the roller stands)."""
     scale = np.maximum(np.abs(np.asarray(u_roll, dtype=float)), 1e-6)
     return scale[:, None] * SLIP_FRACTIONS[None, :]
+
+
+def coulomb_table(limit, grid, u_roll) -> np.ndarray:
+    """Traction force [N] of a Coulomb limit ``limit`` [N] (per angle) on the sliding speeds ``grid`` [m/s]
+    (angles x nodes): limit s / s_c within the creep s_c = :data:`COULOMB_CREEP` |u_roll|, the limit beyond."""
+    creep = COULOMB_CREEP * np.maximum(np.abs(np.asarray(u_roll, dtype=float)), 1e-6)
+    return np.asarray(limit, dtype=float)[:, None] * np.clip(grid / creep[:, None], -1.0, 1.0)
 
 
 @attrs.frozen

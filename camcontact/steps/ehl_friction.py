@@ -11,25 +11,22 @@ film integrated over the Hertz pressure. The friction of a contact (reference ``
 
 from __future__ import annotations
 
-import numpy as np
-
 from typing import Any
 
+import numpy as np
+
 from .. import registry
-from ..dynamics.roller_follower import slip_grid
+from ..dynamics.roller_follower import coulomb_table, slip_grid
 from ..errors import InputError
 from ..models.mixed_lubrication import mixed_line_contact
 from ..step_graph import step
 
-__all__ = ["COULOMB_SMOOTHING", "FLUID_TRACTION_LIMIT", "fluid_traction_model", "ehl_sliding_friction", "fluid_traction_table", "mixed_film_cycle"]
+__all__ = ["FLUID_TRACTION_LIMIT", "fluid_traction_model", "ehl_sliding_friction", "fluid_traction_table", "mixed_film_cycle"]
 
 #: the highest fluid traction coefficient measured in EHL contacts is about 0.1 (traction fluids, Saccheto 2008
 #: Tabelas 4.2/4.3; Evans & Johnson 1986): a fluid coefficient above 0.15 flags the rheology as outside its
 #: validity (a Newtonian film at Hertzian pressures, the ``newtonian`` model without a limiting shear stress)
 FLUID_TRACTION_LIMIT = 0.15
-#: sliding speed (fraction of the rolling speed) over which the boundary friction of the asperities reaches
-#: mu_b (a regularised sign: the asperity friction of a rolling contact vanishes without sliding)
-COULOMB_SMOOTHING = 1e-4
 MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity",
                  "mixed_valid")
 
@@ -136,9 +133,7 @@ def fluid_traction_table(traction_model, normal_force, p_h, b, h_c, u_cam, u_m, 
     fluid = contact.solve(np.where(usable, grid, 0.0)) if contact.thermal is not None else None
     mu = fluid.coefficient if fluid is not None else contact.coefficient(np.where(usable, grid, 0.0))
     asperity, carried, mu_b = _shares(normal_force, inputs)
-    creep = COULOMB_SMOOTHING * np.maximum(np.abs(u_cam), 1e-6)
-    boundary = mu_b * asperity[:, None] * np.clip(grid / creep[:, None], -1.0, 1.0)
-    table = boundary + np.asarray(mu, dtype=float) * carried[:, None]
+    table = coulomb_table(mu_b * asperity, grid, u_cam) + np.asarray(mu, dtype=float) * carried[:, None]
     middle = grid.shape[1] // 2  # the node s = 0
     table[:, middle:] = np.maximum.accumulate(table[:, middle:], axis=1)
     table[:, :middle + 1] = np.minimum.accumulate(table[:, middle::-1], axis=1)[:, ::-1]

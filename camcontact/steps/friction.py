@@ -23,6 +23,7 @@ from ..errors import InputError
 from ..models.friction import Kelley
 from ..step_graph import step
 from .contact import RACES
+from .ehl_friction import FLUID_TRACTION_LIMIT
 
 __all__ = ["ALIASES", "SlotModel", "cam_friction", "cam_wear", "raceway_kelley_friction", "roller_fluid_friction",
            "roller_friction"]
@@ -168,18 +169,28 @@ def roller_friction(Q, u_m, slide_roll_ratio, eta0, E_reduced, effusivity, conta
     inside = bool(kelley.inside_validity(u1, u2))
     messages = kelley.check_validity(kelley.validity_values(u1, u2))
     out = {"friction_validity": "ok" if not messages else "outside the Kelley correlation: " + "; ".join(messages)}
-    power = 0.0
+    mu = np.full(Q.size, np.nan)
+    if loaded.any():
+        mu[loaded] = kelley({"normal_force": Q[loaded], "contact_length": roller_length, "eta0": eta0,
+                             "u1": u1, "u2": u2})["friction_coefficient"]
     for race in RACES:
-        mu, flash = np.full(Q.size, np.nan), np.full(Q.size, np.nan)
         out[f"friction_valid_{race}"] = loaded & inside
-        if loaded.any():
-            mu[loaded] = kelley({"normal_force": Q[loaded], "contact_length": roller_length, "eta0": eta0,
-                                 "u1": u1, "u2": u2})["friction_coefficient"]
-            for j in np.flatnonzero(loaded):
-                flash[j] = flash_temperature(Q[j] / roller_length, E_reduced, contact_radii[race], mu[j], u1, u2,
-                                             effusivity, effusivity)
-            power += float(np.sum(mu[loaded] * Q[loaded])) * abs(u1 - u2)
-        out[f"friction_coefficient_{race}"], out[f"flash_temperature_{race}"] = mu, flash
+    return out | _raceway_heat(Q, {race: mu for race in RACES}, u1, u2, E_reduced, effusivity, contact_radii,
+                               roller_length)
+
+
+def _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, roller_length) -> dict:
+    """Per race the coefficients ``mu[race]`` (NaN for unloaded rollers), Blok's flash temperature [K] of each
+    loaded contact (Delabenetta 2021 Eq. 48) and the bearing's sliding power sum(mu Q |u1 - u2|) [W]."""
+    out, power = {}, 0.0
+    for race in RACES:
+        flash = np.full(Q.size, np.nan)
+        for j in np.flatnonzero(Q > 0.0):
+            flash[j] = flash_temperature(Q[j] / roller_length, E_reduced, contact_radii[race], mu[race][j], u1, u2,
+                                         effusivity, effusivity)
+        loaded = Q > 0.0
+        power += float(np.sum(mu[race][loaded] * Q[loaded])) * abs(u1 - u2)
+        out[f"friction_coefficient_{race}"], out[f"flash_temperature_{race}"] = mu[race], flash
     out["friction_power"] = power
     return out
 
@@ -199,20 +210,15 @@ def roller_fluid_friction(traction_model, Q, u_m, slide_roll_ratio, p_h_inner, p
     u1, u2 = u_m * (1 + 0.5 * slide_roll_ratio), u_m * (1 - 0.5 * slide_roll_ratio)
     loaded = Q > 0.0
     films = {"inner": (p_h_inner, b_inner, h_c_inner), "outer": (p_h_outer, b_outer, h_c_outer)}
-    out, power = {}, 0.0
+    mu = {race: np.full(Q.size, np.nan) for race in RACES}
     for race in RACES:
-        mu, flash = np.full(Q.size, np.nan), np.full(Q.size, np.nan)
         p_h, b, h = (np.asarray(v, dtype=float)[loaded] for v in films[race])
         if loaded.any():
             contact = traction_model.contact(p_h, b, h, u_m, lubricant_state, effusivity)
-            mu[loaded] = np.abs(contact.solve(np.full(p_h.size, u1 - u2)).coefficient)
-            for j in np.flatnonzero(loaded):
-                flash[j] = flash_temperature(Q[j] / roller_length, E_reduced, contact_radii[race], mu[j], u1, u2,
-                                             effusivity, effusivity)
-            power += float(np.sum(mu[loaded] * Q[loaded])) * abs(u1 - u2)
-        out[f"friction_coefficient_{race}"], out[f"flash_temperature_{race}"] = mu, flash
-        out[f"friction_valid_{race}"] = loaded & np.isfinite(mu) & (mu <= 0.15)
+            mu[race][loaded] = np.abs(contact.solve(np.full(p_h.size, u1 - u2)).coefficient)
+    out = _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, roller_length)
+    for race in RACES:
+        out[f"friction_valid_{race}"] = loaded & np.isfinite(mu[race]) & (mu[race] <= FLUID_TRACTION_LIMIT)
     valid = all(out[f"friction_valid_{race}"][loaded].all() for race in RACES)
     out["friction_validity"] = "ok" if valid else "a loaded contact has no film or an unphysical traction (> 0.15)"
-    out["friction_power"] = power
     return out

@@ -15,7 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..dynamics.roller_follower import pin_friction_torque, required_traction, rim_rate, roller_cycle, slip_grid
+from ..dynamics.roller_follower import (coulomb_table, pin_friction_torque, required_traction, rim_rate, roller_cycle,
+                                       slip_grid)
 from ..errors import InputError
 from ..step_graph import step
 
@@ -27,8 +28,6 @@ __all__ = ["ROLLER_OUTPUTS", "cam_friction_torque", "coulomb_traction_table", "r
 SLIP_THRESHOLD = 0.01
 #: fraction of the traction available at which the contact runs on its plateau (gross slip)
 SATURATION = 0.99
-#: creep at which a Coulomb-limited contact reaches mu N (a regularisation of stick, as a fraction of u)
-COULOMB_CREEP = 1e-4
 ROLLER_OUTPUTS = ("roller_speed", "roller_slip", "roller_slipping", "traction_exceeded", "tangential_force", "traction_required",
                   "traction_available", "pin_torque", "friction_force", "friction_coefficient", "friction_power",
                   "roller_cycle")
@@ -39,9 +38,8 @@ def coulomb_traction_table(normal_force, u_cam, traction_limit_coefficient):
     """The traction force [N] a contact of Coulomb limit mu N transmits against the sliding speed [m/s]
     (angles x nodes): mu N s / s_c within the creep s_c = 1e-4 |u_cam|, mu N beyond (stick, then slip)."""
     grid = slip_grid(u_cam)
-    creep = COULOMB_CREEP * np.maximum(np.abs(u_cam), 1e-6)
-    table = traction_limit_coefficient * normal_force[:, None] * np.clip(grid / creep[:, None], -1.0, 1.0)
-    return {"traction_grid": grid, "traction_table": table}
+    return {"traction_grid": grid, "traction_table": coulomb_table(traction_limit_coefficient * normal_force, grid,
+                                                                   u_cam)}
 
 
 def check_roller(roller_radius, roller_inertia) -> None:
