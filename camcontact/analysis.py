@@ -171,20 +171,20 @@ class Analysis:
             return missing
 
         if self.requested is None:
-            outputs = tuple(o for o in graph.default_outputs if o in providers and not resolve(o, ()))
+            outputs = tuple(o for o in graph.default_outputs if o in providers
+                            and (o in graph.effect_outputs or not resolve(o, ())))
         else:
             outputs = tuple(o for o in self.requested if o in providers or o in graph.inputs)
+        if self.requested is None:
+            self._check_reachable(graph, [o for o in outputs if o in graph.effect_outputs], resolve)
+        else:
             unprovided = [o for o in self.requested if o not in outputs]
             if unprovided and len(self.variants) == 1:
                 known = sorted(name for name in providers if name in QUANTITIES)
                 raise InputError(
                     f"{graph.kind} scene cannot give {unprovided[0]!r} with these models; it gives: {', '.join(known)}"
                 )
-            for output in outputs:
-                missing = resolve(output, ())
-                if missing:
-                    hints = "; ".join(f"{m}: {graph.input_hints.get(m, 'not given by the scene')}" for m in dict.fromkeys(missing))
-                    raise InputError(f"output {output!r} of the {graph.kind} scene needs input the scene does not give ({hints})")
+            self._check_reachable(graph, outputs, resolve)
         order: list[Step] = []
         seen: set[str] = set()
         visiting: set[str] = set()
@@ -227,6 +227,15 @@ class Analysis:
             signature = (step.name, *labels[step.name], step.run, step.provides, read, upstream)
             keys[step.name] = self._signatures.setdefault(signature, len(self._signatures))
         return graph, outputs, [(step, keys[step.name], labels[step.name]) for step in order]
+
+    @staticmethod
+    def _check_reachable(graph: SceneGraph, outputs: Iterable[str], resolve: Callable) -> None:
+        """InputError naming the missing inputs (with the scene's hints) of the first output that needs one."""
+        for output in outputs:
+            missing = resolve(output, ())
+            if missing:
+                hints = "; ".join(f"{m}: {graph.input_hints.get(m, 'not given by the scene')}" for m in dict.fromkeys(missing))
+                raise InputError(f"output {output!r} of the {graph.kind} scene needs input the scene does not give ({hints})")
 
     # --------------------------------------------------------------- running
     def run(self) -> Result:

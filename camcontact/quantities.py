@@ -104,6 +104,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("friction_force", "N", "N", "friction force at the contact"),
         _q("friction_coefficient", "", "", "friction force / normal force"),
         _q("friction_power", "W", "W", "friction power loss"),
+        _q("friction_per_length", "N/m", "N/mm", "friction force per unit length of a line contact"),
+        _q("friction_power_per_length", "W/m", "W/mm", "friction power loss per unit length of a line contact"),
         _q("tangential_force", "N", "N", "tangential (friction/traction) force on the follower along the cam surface's motion"),
         _q("friction_torque", "N*m", "N*m", "camshaft torque of the tangential force F_t p"),
         _q("cam_torque_with_friction", "N*m", "N*m", "camshaft drive torque with friction, F dS/dt / omega + F_t p"),

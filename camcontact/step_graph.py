@@ -223,6 +223,9 @@ class SceneGraph:
     index: str | None = None
     #: the outputs that are arrays over ``index`` (the others are scalars: summaries)
     per_index: frozenset = frozenset()
+    #: default outputs an asked-for effect calls for: when an input they need is missing the report does not
+    #: quietly leave them out (as it does other default outputs) but names the missing input up front
+    effect_outputs: frozenset = frozenset()
 
 
 @attrs.frozen

@@ -75,6 +75,12 @@ class LineContact(Component):
         Bulk (inlet) lubricant temperature, needed when the viscosity depends on temperature.
     friction_coefficient : float, optional
         Surface traction coefficient for the subsurface stresses (0 <= mu <= 1); default 0.
+    asperity_density : Quantity or str, optional
+        Summit density η of the pair's composite roughness [1/length²] (> 0), for the ``mixed`` effect
+        (Greenwood–Tripp); default: η β σ = 0.05 with the composite σ.
+    asperity_radius : Quantity or str, optional
+        Summit radius β [length] (> 0) for ``mixed``; default: σ/β = 0.05 (orders of magnitude of ground
+        steel surfaces as Stribeck-curve models use them, Gelinck & Schipper 2000; not data).
     name : str
     """
 
@@ -87,6 +93,8 @@ class LineContact(Component):
     lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Lubricant)))
     temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
     friction_coefficient: float = number_field(default=0.0, validators=[in_range(0.0, 1.0)])
+    asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
+    asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
     def __attrs_post_init__(self) -> None:
         where = f"LineContact {self.name!r}"

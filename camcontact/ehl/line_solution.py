@@ -118,6 +118,16 @@ class LineEHLSolution:
             "b": scales["b"], "p_h": scales["p_h"],
         }
 
+    def traction_profile(self):
+        """The pressure and film of this solution for the fluid traction of the same contact, a
+        :class:`camcontact.contact.fluid_traction.PressureProfile`: x/b = X, p/p_h = P (the problem's
+        pressure scale is the Hertz p_h, ``from_contact``) and h(x)/h_c = H/H_c, H_c = H(0) interpolated
+        (:attr:`H_c`, the central film that :meth:`dimensional` and the multigrid film model report as
+        h_c = H_c b^2/R). Use with ``p_h`` and ``film_thickness = h_c`` of :meth:`dimensional`."""
+        from ..contact.fluid_traction import PressureProfile
+
+        return PressureProfile(x_ratio=self.X, pressure_ratio=self.P, film_ratio=self.H / self.H_c)
+
     def moes_film(self) -> tuple[float, float]:
         """(H_c, H_min) in Moes's scaling H_Moes = (h/R)(2U)^-1/2 = (8 M / pi) H."""
         factor = 8.0 * self.problem.M / math.pi

@@ -220,13 +220,15 @@ def _asperity_only_separation(load, area, sigma, density, radius, E_reduced):
 
 def _assemble(load, area, fraction, film, smooth_film, sigma, density, radius, E_reduced, extra):
     lam = film / sigma
+    with np.errstate(over="ignore"):  # a vanishing asperity share: gamma2 -> inf, as it should
+        gamma2 = np.divide(1.0, fraction, out=np.full(fraction.shape, np.inf), where=fraction > 0.0)
     result = {
         "asperity_load_fraction": fraction,
         "fluid_load_fraction": 1.0 - fraction,
         "asperity_load": fraction * load,
         "fluid_load": (1.0 - fraction) * load,
         "gamma1": np.divide(1.0, 1.0 - fraction, out=np.full(fraction.shape, np.inf), where=fraction < 1.0),
-        "gamma2": np.divide(1.0, fraction, out=np.full(fraction.shape, np.inf), where=fraction > 0.0),
+        "gamma2": gamma2,
         "h_c": film,
         "h_c_smooth": smooth_film,
         "lambda_ratio": lam,
@@ -240,7 +242,7 @@ def _assemble(load, area, fraction, film, smooth_film, sigma, density, radius, E
 
 
 def mixed_line_contact(w, R, E_reduced, u_m, eta0, alpha, sigma, asperity_density, asperity_radius, *,
-                       piezoviscosity: bool = True):
+                       piezoviscosity: bool = True, film_scale=1.0):
     """Load sharing of a rough lubricated line contact (Johnson–Greenwood–Poon; Gelinck–Schipper).
 
     Solves W/gamma_2 = 2 b p_a(h_c) with h_c the Moes (1992) central film at load w/gamma_1 and
@@ -266,6 +268,11 @@ def mixed_line_contact(w, R, E_reduced, u_m, eta0, alpha, sigma, asperity_densit
         :func:`camcontact.contact.asperity_contact.asperity_pressure`).
     piezoviscosity : bool
         False evaluates the film with alpha = 0 (Moes's isoviscous asymptotes).
+    film_scale : float or array_like
+        Factor on the Moes film at every load share [-], > 0: a scene whose smooth film comes from another
+        model (a numerical solution, a thermal reduction) passes h_c(scene) / h_c(Moes, full load), so
+        that the load sharing runs on its film (the ratio taken independent of the load share, as the
+        films' load exponents are close: W^-0.1 to W^-0.13).
 
     Returns
     -------
@@ -273,7 +280,7 @@ def mixed_line_contact(w, R, E_reduced, u_m, eta0, alpha, sigma, asperity_densit
         ``asperity_load_fraction`` 1/gamma_2 [-], ``fluid_load_fraction`` 1/gamma_1 [-],
         ``asperity_load``, ``fluid_load`` [N/m], ``gamma1``, ``gamma2`` [-] (inf where a share is 0),
         ``h_c`` mixed central film = mean-plane separation [m], ``h_c_smooth`` Moes film of the
-        smooth contact [m], ``lambda_ratio`` h_c/sigma [-], ``asperity_pressure`` mean over the
+        smooth contact (x ``film_scale``) [m], ``lambda_ratio`` h_c/sigma [-], ``asperity_pressure`` mean over the
         Hertz strip [Pa], ``real_area_fraction`` A_r/A_Hertz [-], ``asperity_capacity`` share of
         the load the asperities carry at h = 0 [-] (< 1: no boundary limit, see the module
         docstring), ``regime`` ("boundary", "mixed", "full_film"), ``hertz_half_width`` b [m],
@@ -291,9 +298,9 @@ def mixed_line_contact(w, R, E_reduced, u_m, eta0, alpha, sigma, asperity_densit
         _positive(name, "E_reduced", E_reduced, "Pa"), _finite(name, "u_m", u_m, "m/s"),
         _positive(name, "eta0", eta0, "Pa*s"), _non_negative(name, "alpha", alpha, "1/Pa"),
         _positive(name, "sigma", sigma, "m"), _positive(name, "asperity_density", asperity_density, "1/m^2"),
-        _positive(name, "asperity_radius", asperity_radius, "m"),
+        _positive(name, "asperity_radius", asperity_radius, "m"), _positive(name, "film_scale", film_scale, "-"),
     )
-    w_, R_, E_, u_, eta_, alpha_, sigma_, density_, radius_ = (np.array(a, dtype=float) for a in arrays)
+    w_, R_, E_, u_, eta_, alpha_, sigma_, density_, radius_, scale_ = (np.array(a, dtype=float) for a in arrays)
     speed = np.abs(u_)
     film_model = Moes(piezoviscosity=piezoviscosity)
     half_width = np.sqrt(8.0 * w_ * R_ / (math.pi * E_))  # Hertz strip (camcontact.contact.hertz_line)
@@ -301,8 +308,8 @@ def mixed_line_contact(w, R, E_reduced, u_m, eta0, alpha, sigma, asperity_densit
     moving = speed > 0.0
 
     def film_of_fluid_fraction(mask, phi):
-        return np.asarray(film_model.evaluate(R_[mask], w_[mask] * phi, E_[mask] * phi, speed[mask],
-                                              eta_[mask], alpha_[mask])["h_c"], dtype=float)
+        return scale_[mask] * np.asarray(film_model.evaluate(R_[mask], w_[mask] * phi, E_[mask] * phi, speed[mask],
+                                                             eta_[mask], alpha_[mask])["h_c"], dtype=float)
 
     fraction, film = _solve_load_share(w_, area, film_of_fluid_fraction, sigma_, density_, radius_, E_, moving)
     smooth = np.zeros(w_.shape)

@@ -11,7 +11,10 @@ eyring      tau = tau0 asinh(eta(p) u_s/(h tau0))           as newtonian
 
 mu = int tau dA / int p dA over the Hertz pressure with the central film h_c uniform
 (:mod:`camcontact.contact.fluid_traction`, which states the equations, the regime criterion and the lumped
-thermal balance). Both models take the limiting shear stress tau_L = tau_L0 + Lambda_L p
+thermal balance), or, given ``profile=`` (a :class:`~camcontact.contact.fluid_traction.PressureProfile`,
+e.g. ``LineEHLSolution.traction_profile()``) in :meth:`contact`, :meth:`curve` or :meth:`evaluate`,
+int tau dx / int p dx over a numerical line pressure and film h(x) = h_c profile.film_ratio. Both models
+take the limiting shear stress tau_L = tau_L0 + Lambda_L p
 (``limiting_shear_slope=None`` switches it off) and, with ``thermal=True``, the lumped contact temperature
 rise (flash temperature of the surfaces + mean film rise) that lowers the viscosity by exp(-beta dT).
 
@@ -43,6 +46,7 @@ from ..contact.fluid_traction import (
     DEFAULT_NODES,
     FluidTraction,
     FluidTractionContact,
+    PressureProfile,
     TractionThermal,
     fluid_traction,
 )
@@ -126,23 +130,32 @@ class _FluidTraction(TractionModel):
                              "effusivity_1 (and effusivity_2) or the state's 'effusivity' [W s^0.5/(m^2 K)]")
         return TractionThermal.from_lubricant_state(lubricant_state, first, second)
 
-    def contact(self, p_h, b, h_c, u_m, lubricant_state, effusivity=None) -> FluidTractionContact:
+    def contact(self, p_h, b, h_c, u_m, lubricant_state, effusivity=None,
+                profile: PressureProfile | None = None) -> FluidTractionContact:
         """The contact prepared once for many sliding speeds (e.g. a roller's traction table): its
-        ``coefficient(u_s)`` gives mu [-] cheaply; inputs as :meth:`evaluate` (they broadcast with u_s)."""
+        ``coefficient(u_s)`` gives mu [-] cheaply; inputs as :meth:`evaluate` (they broadcast with u_s);
+        ``profile``: a numerical line pressure and film instead of the Hertz one (its batch shape
+        broadcasts with the inputs)."""
         eta0, law = self._viscosity(lubricant_state)
         return FluidTractionContact(p_h=p_h, film_thickness=h_c, eta0=eta0, log_viscosity_ratio=law,
                                     entrainment_speed=u_m, half_width=b,
-                                    thermal=self._thermal(lubricant_state, effusivity), **self._rheology())
+                                    thermal=self._thermal(lubricant_state, effusivity), profile=profile,
+                                    **self._rheology())
 
-    def curve(self, slide_roll_ratio, *, p_h, b, h_c, u_m, lubricant_state, effusivity=None) -> FluidTraction:
+    def curve(self, slide_roll_ratio, *, p_h, b, h_c, u_m, lubricant_state, effusivity=None,
+              profile: PressureProfile | None = None) -> FluidTraction:
         """The traction curve at the slide-to-roll ratios S = u_s/u_m [-] of one contact (the regime per
-        point identifies the linear, non-linear and plateau parts)."""
+        point identifies the linear, non-linear and plateau parts); ``profile`` as :meth:`contact`."""
         S = np.asarray(slide_roll_ratio, dtype=float)
-        return self.contact(p_h, b, h_c, u_m, lubricant_state, effusivity).solve(S * np.asarray(u_m, dtype=float))
+        return self.contact(p_h, b, h_c, u_m, lubricant_state, effusivity,
+                            profile=profile).solve(S * np.asarray(u_m, dtype=float))
 
-    def evaluate(self, normal_force, p_h, b, h_c, u_s, u_m, lubricant_state, effusivity=None):
+    def evaluate(self, normal_force, p_h, b, h_c, u_s, u_m, lubricant_state, effusivity=None,
+                 profile: PressureProfile | None = None):
         """Traction at each point (SI inputs: N [N], p_h [Pa], b half-width along rolling [m], h_c [m],
-        u_s = u1 - u2 [m/s], u_m [m/s]); see the class docstring for the outputs."""
+        u_s = u1 - u2 [m/s], u_m [m/s]); see the class docstring for the outputs. ``profile``: a numerical
+        line pressure and film (x/b, p/p_h, h/h_c) instead of the Hertz pressure and uniform h_c, one
+        for all points or one per point (batch shape broadcasting with the inputs)."""
         eta0, law = self._viscosity(lubricant_state)
         thermal = self._thermal(lubricant_state, effusivity)
         arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (normal_force, p_h, b, h_c, u_s, u_m)))
@@ -158,12 +171,27 @@ class _FluidTraction(TractionModel):
         stress, rise = np.full(shape, np.nan), np.full(shape, np.nan)
         regime = np.full(shape, NO_FILM, dtype=object)
         valid = np.zeros(shape, dtype=bool)
+        if profile is not None and not isinstance(profile, PressureProfile):
+            raise InputError(f"traction model {self.name!r}: profile = {type(profile).__name__}; allowed: None or a "
+                             "PressureProfile")
+        if profile is not None and profile.batch_shape:
+            try:
+                fits = np.broadcast_shapes(profile.batch_shape, shape) == shape
+            except ValueError:
+                fits = False
+            if not fits:
+                raise InputError(f"traction model {self.name!r}: the profile's batch shape {profile.batch_shape} "
+                                 f"does not broadcast to the inputs' shape {shape}")
         if np.any(usable):
             take = usable
+            if profile is not None and profile.batch_shape:  # one profile per point: those of the usable ones
+                target = shape + (profile.n,)
+                profile = PressureProfile(*(np.broadcast_to(field, target)[take] for field in
+                                            (profile.x_ratio, profile.pressure_ratio, profile.film_ratio)))
             result = fluid_traction(u[take], p_h=p[take], film_thickness=h[take], eta0=eta0, log_viscosity_ratio=law,
                                     entrainment_speed=None if thermal is None else um[take],
                                     half_width=None if thermal is None else a[take], thermal=thermal,
-                                    **self._rheology())
+                                    profile=profile, **self._rheology())
             mu[take], stress[take], rise[take] = result.coefficient, result.shear_stress, result.temperature_rise
             regime[take], valid[take] = result.regime, result.valid
         regime = regime.astype(str)

@@ -44,7 +44,7 @@ from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.roller import ROLLER_OUTPUTS
 from ..dynamics.roller_follower import full_turn
 from ..steps.ehl_friction import fluid_traction_model
-from .cam_follower_friction import friction_inputs, friction_steps
+from .cam_follower_friction import effect_outputs, friction_inputs, friction_steps
 from ..steps.summaries import (friction_power_mean, friction_torque_mean, h_min_cycle, jump_margin,
                                peak_contact_force, peak_pressure, wear_rate_mean)
 from .cam_follower_plots import plot_cam_follower
@@ -155,6 +155,8 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
     inputs = {**cam_follower_inputs(scene, effects), "film_model": film_model, "friction_model": friction,
               "wear_model": wear, "thermal_model": models["thermal"], "traction_model": traction,
               **friction_inputs(scene, effects)}
-    return SceneGraph(kind="cam_follower", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS,
+    asked = effect_outputs(effects)
+    return SceneGraph(kind="cam_follower", inputs=inputs, steps=tuple(steps),
+                      default_outputs=DEFAULT_OUTPUTS + tuple(q for q in asked if q not in DEFAULT_OUTPUTS),
                       input_hints=HINTS, plotter=plot_cam_follower, effects=effects, index="cam_angle",
-                      per_index=PER_ANGLE)
+                      per_index=PER_ANGLE, effect_outputs=frozenset(asked))

@@ -11,53 +11,44 @@ flat face, no model chosen        Coulomb mu N; with ``non_newtonian`` and/or ``
 any, ``models={"friction": m}``   the friction model m per angle (the roller then assumed rolling)
 ================================ =============================================================================
 
-The fluid's rheology is the model slot ``traction``: default ``"eyring"`` with ``non_newtonian`` (the
-lubricant's ``eyring_stress`` and limiting shear stress when it gives them), else ``"newtonian"`` without a
-limiting shear stress; with ``thermal`` its contact temperature rise lowers the viscosity (the materials'
+The fluid's rheology is the model slot ``traction``: default ``"eyring"`` with ``non_newtonian``, else ``"newtonian"``,
+both bounded by the lubricant's limiting shear stress (its ``eyring_stress`` and limiting shear stress when it
+gives them; :func:`camcontact.steps.ehl_friction.fluid_traction_model`); with ``thermal`` its contact temperature rise lowers the viscosity (the materials'
 thermal data are needed). ``mixed`` adds Greenwood–Tripp asperity load sharing with the pair's asperity
 parameters (``CamFollower.asperity_density`` / ``asperity_radius``) and the lubricant's ``boundary_friction``.
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
 from ..components.cam_follower import CamFollower
-from ..errors import InputError
 from ..step_graph import Step
-from ..steps.ehl_friction import ehl_sliding_friction, fluid_traction_table, mixed_film_cycle
+from ..steps.ehl_friction import (EHL_EFFECTS, ehl_friction_inputs, ehl_sliding_friction, fluid_traction_table,
+                                  mixed_film_cycle)
 from ..steps.film import composite_roughness_step
 from ..steps.friction import SlotModel, cam_friction
 from ..steps.roller import cam_friction_torque, coulomb_traction_table, roller_spin, sliding_tangential_force
 
-__all__ = ["ASPERITY_DEFAULTS", "EHL_EFFECTS", "friction_inputs", "friction_steps"]
+__all__ = ["effect_outputs", "friction_inputs", "friction_steps"]
 
-#: effects that replace Coulomb friction by the EHL friction of the film
-EHL_EFFECTS = frozenset({"mixed", "non_newtonian"})
-#: (eta beta sigma, sigma / beta) when the scene gives no asperity parameters (see CamFollower)
-ASPERITY_DEFAULTS = (0.05, 0.05)
+
+def effect_outputs(effects: frozenset) -> tuple[str, ...]:
+    """The per-angle outputs the asked-for effects add to the default report (the scene names the missing
+    input of any of them, and of the friction they change, up front instead of leaving them out)."""
+    mixed = ("asperity_load_fraction", "Lambda_mixed", "lubrication_regime", "mixed_valid") if "mixed" in effects else ()
+    fluid = (("friction_force", "friction_coefficient", "friction_power", "fluid_traction_coefficient",
+              "traction_regime", "traction_valid") + (("traction_temperature_rise",) if "thermal" in effects else ())
+             if effects & EHL_EFFECTS else ())
+    thermal = ("thermal_factor", "thermal_valid") if "thermal" in effects else ()
+    return mixed + fluid + thermal
 
 
 def friction_inputs(scene: CamFollower, effects: frozenset) -> dict[str, Any]:
-    """The graph inputs of the EHL friction: asperity parameters, boundary friction, surface effusivities."""
-    inputs: dict[str, Any] = {}
-    if scene.lubricant is not None:
-        inputs["boundary_friction"] = scene.lubricant.boundary_friction
-    cam, follower = scene.cam.material, scene.follower.material
-    try:
-        inputs["effusivity"] = (cam.thermal_effusivity(), follower.thermal_effusivity())
-    except InputError:
-        pass  # only a thermal traction model needs it: reported up front as missing
-    if "mixed" in effects and scene.cam.roughness is not None and scene.follower.roughness is not None:
-        sigma = math.hypot(scene.cam.si.roughness, scene.follower.si.roughness)
-        product, ratio = ASPERITY_DEFAULTS
-        radius = scene.si.asperity_radius if scene.asperity_radius is not None else sigma / ratio
-        density = (scene.si.asperity_density if scene.asperity_density is not None
-                   else product / (radius * sigma) if sigma > 0 else None)
-        inputs |= {"asperity_radius": radius} | ({"asperity_density": density} if density else {})
-    return inputs
+    """The graph inputs of the EHL friction (:func:`camcontact.steps.ehl_friction.ehl_friction_inputs`)."""
+    return ehl_friction_inputs(scene.lubricant, scene.cam, scene.follower, effects,
+                               asperity_density=scene.si.asperity_density, asperity_radius=scene.si.asperity_radius)
 
 
 def friction_steps(scene: CamFollower, friction: SlotModel, chosen: Mapping[str, Any], effects: frozenset,

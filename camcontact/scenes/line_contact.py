@@ -7,11 +7,19 @@ Model slots (``Analysis(models=...)``):
     both h_c and h_min); a list makes one variant per model.
 ``approach``
     ``"hamrock"`` (default) or ``"palmgren"`` (needs ``load`` and ``length``).
+``traction``
+    the fluid's rheology for the friction (a ``traction_models`` name or model; default ``"eyring"``
+    with ``non_newtonian``, else ``"newtonian"``; :func:`camcontact.steps.ehl_friction.fluid_traction_model`).
 
 Effects: ``elasticity``, ``piezoviscosity`` and ``compressibility`` (on by default; the last
-only changes the density law handed to the numerical solver) and ``thermal`` (inlet
+only changes the density law handed to the numerical solver), ``thermal`` (inlet
 shear-heating reduction of the film, needs the lubricant's thermal conductivity and a
-temperature law).
+temperature law; with friction also the contact temperature rise of the traction, which needs the
+materials' thermal data), ``non_newtonian`` (the friction of the contact at its sliding speed from the
+fluid's rheology, :func:`camcontact.steps.ehl_friction.contact_ehl_friction`) and ``mixed`` (Greenwood–Tripp
+asperity load sharing: the asperities' share, the film at the fluid's share, the lubrication regime and the
+boundary friction of the asperities in the friction). Friction is per unit length of the contact. A Stribeck
+curve (friction against speed) is a sweep of the scene: :func:`camcontact.scenes.stribeck.stribeck_sweep`.
 """
 
 from __future__ import annotations
@@ -23,6 +31,7 @@ from ..components.line_contact import LineContact
 from ..errors import InputError
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import APPROACHES, line_geometry, line_hertz
+from ..steps.ehl_friction import EHL_EFFECTS, contact_ehl_friction, ehl_friction_inputs, fluid_traction_model, mixed_contact
 from ..steps.film import (composite_roughness_step, ehl_groups, film_parameter, films_of, inlet_thermal_correction,
                           isothermal_films, line_film, lubrication_regime_step, model_reads, resolve_film_model,
                           thermal_films)
@@ -31,9 +40,10 @@ from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import line_subsurface_stresses
 from .line_contact_plots import plot_line_contact
 
-__all__ = ["DEFAULT_EFFECTS", "SUPPORTED_EFFECTS", "build_line_contact", "film_steps", "line_contact_inputs"]
+__all__ = ["DEFAULT_EFFECTS", "SUPPORTED_EFFECTS", "build_line_contact", "film_steps", "friction_steps",
+           "line_contact_inputs"]
 
-SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "thermal"})
+SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "thermal", "mixed", "non_newtonian"})
 #: compressibility is on by default: numerical EHL conventionally includes it (with an
 #: incompressible lubricant the pressure spike grows without bound under grid refinement at
 #: high L); the film formulas are not affected by it
@@ -43,6 +53,9 @@ DEFAULT_OUTPUTS = (
     "E_reduced", "R", "w", "u_m", "b", "p_h", "approach", "tau_max", "z_tau_max", "tau_xz_range",
     "eta0", "alpha", "M", "L", "h_c", "h_min", "Lambda_c", "Lambda_min", "regime", "film_validity",
 )
+MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "mixed_valid")
+FRICTION_OUTPUTS = ("traction_coefficient", "friction_per_length", "friction_power_per_length",
+                    "fluid_traction_coefficient", "traction_regime", "traction_temperature_rise", "traction_valid")
 HINTS = {
     "lubricant": "set LineContact.lubricant",
     "temperature": "set LineContact.temperature (the lubricant's viscosity depends on it)",
@@ -50,6 +63,8 @@ HINTS = {
     "sigma2": "set the roughness of body2 (Body.roughness, RMS)",
     "F": "give LineContact.load with length (the palmgren approach needs the total force)",
     "length": "give LineContact.length",
+    "effusivity": "give both materials thermal_conductivity, density and specific_heat (the thermal traction's "
+                  "flash temperature), or leave out the thermal effect",
 }
 
 
@@ -84,10 +99,19 @@ def film_steps(film_model: Any, thermal: bool) -> list[Step]:
     return steps + ([Step.of(inlet_thermal_correction)] if thermal else [])
 
 
+def friction_steps(effects: frozenset, thermal_traction: bool) -> list[Step]:
+    """With ``mixed`` / ``non_newtonian``: the asperity load sharing and the contact's EHL friction."""
+    if not effects & EHL_EFFECTS:
+        return []
+    reads = ("asperity_load_fraction", "h_c_mixed", "boundary_friction") if "mixed" in effects else ()
+    extra = reads + (("effusivity",) if thermal_traction else ())
+    return [*([Step.of(mixed_contact)] if "mixed" in effects else []), Step.of(contact_ehl_friction, extra=extra)]
+
+
 @scene_builder(LineContact)
 def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effects: frozenset | None) -> SceneGraph:
     """Scene graph of a :class:`~camcontact.components.LineContact` (one variant)."""
-    effects = checked_request("line_contact", models, effects, slots=("film", "approach"),
+    effects = checked_request("line_contact", models, effects, slots=("film", "approach", "traction"),
                               supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
     approach = models.get("approach", "hamrock")
     if approach not in APPROACHES:
@@ -96,8 +120,15 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
     steps = [Step.of(line_geometry), Step.of(surface_kinematics), Step.of(line_hertz), Step.of(APPROACHES[approach]),
              Step.of(line_subsurface_stresses), Step.of(composite_roughness_step),
              lubricant_step(contact.lubricant, contact.si.temperature), *film_steps(film_model, "thermal" in effects)]
+    traction = fluid_traction_model(contact.lubricant, effects, models.get("traction"))
+    asked = (MIXED_OUTPUTS if "mixed" in effects else ()) + (FRICTION_OUTPUTS if effects & EHL_EFFECTS else ())
+    friction = ehl_friction_inputs(contact.lubricant, contact.body1, contact.body2, effects,
+                                   asperity_density=contact.si.asperity_density,
+                                   asperity_radius=contact.si.asperity_radius)
     return SceneGraph(
-        kind="line_contact", inputs={**line_contact_inputs(contact, effects), "film_model": film_model},
-        steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS, input_hints=HINTS, plotter=plot_line_contact,
-        effects=effects,
+        kind="line_contact",
+        inputs={**line_contact_inputs(contact, effects), "film_model": film_model, "traction_model": traction,
+                **friction},
+        steps=tuple(steps + friction_steps(effects, traction.thermal)), default_outputs=DEFAULT_OUTPUTS + asked,
+        input_hints=HINTS, plotter=plot_line_contact, effects=effects, effect_outputs=frozenset(asked),
     )

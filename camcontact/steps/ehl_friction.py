@@ -11,6 +11,7 @@ film integrated over the Hertz pressure. The friction of a contact (reference ``
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -18,30 +19,63 @@ import numpy as np
 from .. import registry
 from ..dynamics.roller_follower import coulomb_table, slip_grid
 from ..errors import InputError
+from ..models.film_line import Moes
 from ..models.mixed_lubrication import mixed_line_contact
 from ..step_graph import step
 
-__all__ = ["FLUID_TRACTION_LIMIT", "fluid_traction_model", "ehl_sliding_friction", "fluid_traction_table", "mixed_film_cycle"]
+__all__ = ["ASPERITY_DEFAULTS", "EHL_EFFECTS", "FLUID_TRACTION_LIMIT", "contact_ehl_friction", "ehl_friction_inputs",
+           "ehl_sliding_friction", "fluid_traction_model", "fluid_traction_table", "mixed_contact", "mixed_film_cycle"]
+
+#: effects that replace Coulomb friction by the EHL friction of the film
+EHL_EFFECTS = frozenset({"mixed", "non_newtonian"})
+#: (eta beta sigma, sigma / beta) when the scene gives no asperity parameters: orders of magnitude of ground
+#: steel surfaces as Stribeck-curve models use them (Gelinck & Schipper 2000), not data
+ASPERITY_DEFAULTS = (0.05, 0.05)
 
 #: the highest fluid traction coefficient measured in EHL contacts is about 0.1 (traction fluids, Saccheto 2008
 #: Tabelas 4.2/4.3; Evans & Johnson 1986): a fluid coefficient above 0.15 flags the rheology as outside its
-#: validity (a Newtonian film at Hertzian pressures, the ``newtonian`` model without a limiting shear stress)
+#: validity (a Newtonian film at Hertzian pressures without a limiting shear stress)
 FLUID_TRACTION_LIMIT = 0.15
 MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity",
                  "mixed_valid")
 
 
+def ehl_friction_inputs(lubricant: Any, body1: Any, body2: Any, effects: frozenset, *,
+                        asperity_density: float | None = None, asperity_radius: float | None = None) -> dict[str, Any]:
+    """The graph inputs of the EHL friction of two bodies (each with ``material`` and ``roughness``): the
+    lubricant's boundary friction, the surfaces' thermal effusivities (when the materials give them) and, with
+    ``mixed``, the asperity radius [m] and density [1/m^2] (given, or :data:`ASPERITY_DEFAULTS` with the
+    composite roughness)."""
+    inputs: dict[str, Any] = {}
+    if lubricant is not None:
+        inputs["boundary_friction"] = lubricant.boundary_friction
+    try:
+        inputs["effusivity"] = (body1.material.thermal_effusivity(), body2.material.thermal_effusivity())
+    except InputError:
+        pass  # only a thermal traction model needs it: reported up front as missing
+    if "mixed" in effects and body1.roughness is not None and body2.roughness is not None:
+        sigma = math.hypot(body1.si.roughness, body2.si.roughness)
+        product, ratio = ASPERITY_DEFAULTS
+        radius = asperity_radius if asperity_radius is not None else sigma / ratio
+        density = (asperity_density if asperity_density is not None
+                   else product / (radius * sigma) if sigma > 0 else None)
+        inputs |= {"asperity_radius": radius} | ({"asperity_density": density} if density else {})
+    return inputs
+
+
 def fluid_traction_model(lubricant: Any, effects: frozenset, spec: Any = None) -> Any:
     """A scene's fluid traction model: ``spec`` (a model, or a name of the ``traction_models`` family), else
-    ``"eyring"`` with the ``non_newtonian`` effect and ``"newtonian"`` without a limiting shear stress without
-    it; parameters from the lubricant where it gives them (``eyring_stress``, ``limiting_shear_stress``,
-    ``limiting_shear_slope``); thermal (its contact temperature) with the ``thermal`` effect."""
+    ``"eyring"`` with the ``non_newtonian`` effect, else ``"newtonian"`` — both bounded by the lubricant's
+    limiting shear stress tau_L0 + Lambda_L p (Bair & Winer 1979): a Newtonian film without it would carry
+    traction coefficients of order 10-1000 at Hertzian pressures, which no oil transmits (the unbounded
+    textbook film stays available as ``models={"traction": NewtonianTraction(limiting_shear_slope=None)}``
+    and is flagged by ``traction_valid``); parameters from the lubricant where it gives them
+    (``eyring_stress``, ``limiting_shear_stress``, ``limiting_shear_slope``); thermal (its contact
+    temperature) with the ``thermal`` effect."""
     if spec is not None and not isinstance(spec, str):
         return spec
     name = spec or ("eyring" if "non_newtonian" in effects else "newtonian")
     parameters: dict[str, Any] = {"thermal": "thermal" in effects}
-    if "non_newtonian" not in effects and spec is None:
-        parameters["limiting_shear_slope"] = None
     if lubricant is not None:
         given = {"eyring_stress": lubricant.si.eyring_stress, "limiting_shear_stress": lubricant.si.limiting_shear_stress,
                  "limiting_shear_slope": lubricant.limiting_shear_slope}
@@ -54,22 +88,37 @@ def fluid_traction_model(lubricant: Any, effects: frozenset, spec: Any = None) -
 
 
 @step("mixed", provides=MIXED_OUTPUTS, model="greenwood_tripp + johnson_greenwood_poon")
-def mixed_film_cycle(w, R, E_reduced, u_m, eta0, alpha_effective, sigma, asperity_density, asperity_radius,
+def mixed_film_cycle(w, R, E_reduced, u_m, eta0, alpha_effective, h_c, sigma, asperity_density, asperity_radius,
                      piezoviscosity):
     """Per angle: the asperity share of the load [-], the film at the fluid's share h_c [m], Lambda = h_c/sigma,
-    the regime ("boundary", "mixed", "full_film"; "open" where the contact is open), the asperities' capacity
-    A_Hertz p_a(0)/W [-] and whether the model can reach the boundary regime there (``mixed_valid``: capacity
-    >= 1 or Lambda >= 1 — below, the smooth film formulas cannot thin the film enough for the asperities to
-    carry the load, and the asperity share is a lower bound)."""
-    w, R, u_m = (np.asarray(v, dtype=float) for v in (w, R, u_m))
+    the regime ("boundary", "mixed", "full_film"; "open" where the contact is open, "unknown" where the scene
+    has no film), the asperities' capacity A_Hertz p_a(0)/W [-] and whether the model can reach the boundary
+    regime there (``mixed_valid``: capacity >= 1 or Lambda >= 1 — below, the smooth film formulas cannot thin
+    the film enough for the asperities to carry the load, and the asperity share is a lower bound).
+
+    The load sharing runs on the scene's own film ``h_c`` (its film model, its thermal reduction): the Moes
+    film of each load share is scaled by h_c / h_c(Moes, full load) (``film_scale`` of
+    :func:`camcontact.models.mixed_lubrication.mixed_line_contact`)."""
+    w, R, u_m, h_c = (np.asarray(v, dtype=float) for v in (w, R, u_m, h_c))
     n = w.size
     out = {"asperity_load_fraction": np.zeros(n), "h_c_mixed": np.full(n, np.nan), "Lambda_mixed": np.full(n, np.nan),
            "lubrication_regime": np.full(n, "open", dtype=object), "asperity_capacity": np.full(n, np.nan),
            "mixed_valid": np.zeros(n, dtype=bool)}
-    loaded = w > 0.0
+    h_c = np.broadcast_to(h_c, w.shape)
+    filmed = np.isfinite(h_c) & (h_c > 0.0)
+    out["lubrication_regime"][(w > 0.0) & ~filmed] = "unknown"
+    out["asperity_load_fraction"][(w > 0.0) & ~filmed] = np.nan
+    loaded = (w > 0.0) & filmed
     if loaded.any():
-        result = mixed_line_contact(w[loaded], R[loaded], E_reduced, np.abs(u_m[loaded]), eta0, alpha_effective,
-                                    sigma, asperity_density, asperity_radius, piezoviscosity=piezoviscosity)
+        speed = np.abs(u_m[loaded])
+        scale = np.ones(speed.size)
+        moving = speed > 0.0  # without entrainment the model has no film to scale (boundary lubrication)
+        if moving.any():
+            moes = Moes(piezoviscosity=piezoviscosity).evaluate(R[loaded][moving], w[loaded][moving], E_reduced,
+                                                                 speed[moving], eta0, alpha_effective)["h_c"]
+            scale[moving] = h_c[loaded][moving] / np.asarray(moes, dtype=float)
+        result = mixed_line_contact(w[loaded], R[loaded], E_reduced, speed, eta0, alpha_effective, sigma,
+                                    asperity_density, asperity_radius, piezoviscosity=piezoviscosity, film_scale=scale)
         out["asperity_load_fraction"][loaded] = result["asperity_load_fraction"]
         out["h_c_mixed"][loaded] = result["h_c"]
         out["Lambda_mixed"][loaded] = result["lambda_ratio"]
@@ -138,3 +187,34 @@ def fluid_traction_table(traction_model, normal_force, p_h, b, h_c, u_cam, u_m, 
     table[:, middle:] = np.maximum.accumulate(table[:, middle:], axis=1)
     table[:, :middle + 1] = np.minimum.accumulate(table[:, middle::-1], axis=1)[:, ::-1]
     return {"traction_grid": grid, "traction_table": table}
+
+
+def _one(values: dict) -> dict:
+    """The single entry of each per-angle array (a one-contact scene's scalars)."""
+    return {k: (v.item() if isinstance(v, np.ndarray) else v) for k, v in values.items()}
+
+
+@step("mixed", provides=MIXED_OUTPUTS, model="greenwood_tripp + johnson_greenwood_poon")
+def mixed_contact(w, R, E_reduced, u_m, eta0, alpha_effective, h_c, sigma, asperity_density, asperity_radius,
+                  piezoviscosity):
+    """:func:`mixed_film_cycle` of one line contact (load per length ``w`` [N/m]): scalar outputs."""
+    values = mixed_film_cycle(np.atleast_1d(w), np.atleast_1d(R), E_reduced, np.atleast_1d(u_m), eta0,
+                              alpha_effective, np.atleast_1d(h_c), sigma, asperity_density, asperity_radius,
+                              piezoviscosity)
+    return _one(values)
+
+
+@step("friction", provides=("friction_per_length", "traction_coefficient", "friction_power_per_length",
+                            "fluid_traction_coefficient", "traction_regime", "traction_temperature_rise",
+                            "traction_valid"),
+      model=lambda traction_model: f"{traction_model.name} fluid + boundary")
+def contact_ehl_friction(traction_model, w, p_h, b, h_c, u_s, u_m, lubricant_state, **inputs):
+    """:func:`ehl_sliding_friction` of one line contact at its sliding speed u_s = u1 - u2: the friction force
+    per unit length [N/m], the contact's friction (traction) coefficient [-], the friction power per unit
+    length [W/m] and the fluid's coefficient, regime, temperature rise [K] and validity."""
+    values = ehl_sliding_friction(traction_model, np.atleast_1d(w), np.atleast_1d(p_h), np.atleast_1d(b),
+                                  np.atleast_1d(h_c), np.atleast_1d(u_s), np.atleast_1d(u_m), lubricant_state,
+                                  **inputs)
+    names = {"friction_force": "friction_per_length", "friction_coefficient": "traction_coefficient",
+             "friction_power": "friction_power_per_length"}
+    return _one({names.get(k, k): v for k, v in values.items()})

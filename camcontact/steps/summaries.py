@@ -47,12 +47,21 @@ def h_min_cycle(h_min):
     return {"h_min_cycle": float(np.nanmin(h_min)) if np.any(np.isfinite(h_min)) else 0.0}
 
 
+def _per_turn(cam_angle, rate, angular_speed) -> tuple[float, float]:
+    """(time mean [unit of rate], integral over one turn [unit of rate x s]) of a rate sampled over the turn at
+    the cam's angular speed omega(theta) [rad/s]: the turn lasts T = int dtheta/omega, the integral is
+    int rate dtheta/omega (with a constant speed: the angle mean and mean x 2 pi/omega)."""
+    per_angle = cycle_mean(cam_angle, np.asarray(rate, dtype=float) / angular_speed) * 2.0 * math.pi
+    duration = cycle_mean(cam_angle, 1.0 / np.asarray(angular_speed, dtype=float)) * 2.0 * math.pi
+    return per_angle / duration, per_angle
+
+
 @step("friction_power_mean", provides=("friction_power_mean", "friction_energy_per_cycle"))
-def friction_power_mean(friction_power, speed, cam_angle):
-    """The friction power averaged over the turn [W] and the energy it dissipates per cam turn [J] at cam
-    speed [rad/s]."""
-    mean = cycle_mean(cam_angle, friction_power)
-    return {"friction_power_mean": mean, "friction_energy_per_cycle": mean * 2.0 * math.pi / speed}
+def friction_power_mean(friction_power, angular_speed, cam_angle):
+    """The friction power averaged over the time of a turn [W] and the energy it dissipates per cam turn [J],
+    at the cam's angular speed over the turn [rad/s] (which changes under an angular acceleration)."""
+    mean, energy = _per_turn(cam_angle, friction_power, angular_speed)
+    return {"friction_power_mean": mean, "friction_energy_per_cycle": energy}
 
 
 @step("friction_torque_mean", provides=("friction_torque_mean", "cam_torque_with_friction_max"))
@@ -64,7 +73,8 @@ def friction_torque_mean(friction_torque, cam_torque_with_friction, cam_angle):
 
 
 @step("wear_rate_mean", provides=("wear_rate_mean", "wear_volume_per_cycle"))
-def wear_rate_mean(wear_rate, speed, cam_angle):
-    """The wear rate averaged over the turn [m^3/s] and the volume worn per turn [m^3] at cam speed [rad/s]."""
-    return {"wear_rate_mean": cycle_mean(cam_angle, wear_rate),
-            "wear_volume_per_cycle": cycle_mean(cam_angle, wear_rate) * 2.0 * math.pi / speed}
+def wear_rate_mean(wear_rate, angular_speed, cam_angle):
+    """The wear rate averaged over the time of a turn [m^3/s] and the volume worn per turn [m^3], at the cam's
+    angular speed over the turn [rad/s]."""
+    mean, volume = _per_turn(cam_angle, wear_rate, angular_speed)
+    return {"wear_rate_mean": mean, "wear_volume_per_cycle": volume}

@@ -81,9 +81,12 @@ def test_accuracy_vs_time_friction_quick(tmp_path):
     assert (tmp_path / "accuracy_vs_time_friction.csv").exists()
     by = frame.set_index("rung")
     assert len(by) == 6 and (frame["time per angle [ms]"] > 0).all()
-    # the Newtonian film overestimates traction by orders of magnitude; Eyring brings it into the EHL range
-    assert by.loc["mixed, newtonian fluid", "peak coefficient"] > 1.0
+    # the Newtonian film sits on the limiting-shear plateau (0.075, + boundary friction where asperities touch);
+    # Eyring's non-linear viscous traction lies below it, and so does the friction power
+    assert 0.07 < by.loc["mixed, newtonian fluid", "peak coefficient"] < 0.085
     assert by.loc["eyring isothermal", "peak coefficient"] < 0.1
+    assert by.loc["eyring isothermal", "friction power mean [W]"] < by.loc["mixed, newtonian fluid",
+                                                                           "friction power mean [W]"]
     # the contact temperature lowers the friction power
     assert by.loc["mixed + eyring + thermal", "friction power mean [W]"] < by.loc["mixed + eyring isothermal",
                                                                                  "friction power mean [W]"]

@@ -15,8 +15,9 @@ import camcontact as cc
 from camcontact import registry
 from camcontact.models.mixed_lubrication import mixed_line_contact
 from camcontact.scene_file import load_scene
-from camcontact.steps.ehl_friction import (FLUID_TRACTION_LIMIT, ehl_sliding_friction, fluid_traction_table,
-                                           mixed_film_cycle)
+from camcontact.models.film_line import Moes
+from camcontact.steps.ehl_friction import (FLUID_TRACTION_LIMIT, contact_ehl_friction, ehl_sliding_friction,
+                                           fluid_traction_table, mixed_contact, mixed_film_cycle)
 from step_checks import assert_provides
 
 OIL = cc.Lubricant(alpha="2.2e-8 1/Pa", roelands_z=0.68)
@@ -28,15 +29,32 @@ U = np.array([2.0, 0.05, 3.0])
 
 
 def test_mixed_film_cycle_wraps_the_load_sharing_model_and_marks_open_contacts():
-    out = mixed_film_cycle(W, R, E, U, STATE.eta0, STATE.alpha, 0.3e-6, 0.05 / (6e-6 * 0.3e-6), 6e-6, True)
+    moes = np.r_[np.nan, Moes().evaluate(R[1:], W[1:], E, np.abs(U[1:]), STATE.eta0, STATE.alpha)["h_c"]]
+    density = 0.05 / (6e-6 * 0.3e-6)
+    out = mixed_film_cycle(W, R, E, U, STATE.eta0, STATE.alpha, moes, 0.3e-6, density, 6e-6, True)
     assert_provides(mixed_film_cycle, out)
-    direct = mixed_line_contact(W[1:], R[1:], E, U[1:], STATE.eta0, STATE.alpha, 0.3e-6, 0.05 / (6e-6 * 0.3e-6),
-                                6e-6)
+    direct = mixed_line_contact(W[1:], R[1:], E, U[1:], STATE.eta0, STATE.alpha, 0.3e-6, density, 6e-6)
     np.testing.assert_allclose(out["asperity_load_fraction"][1:], direct["asperity_load_fraction"])
     np.testing.assert_allclose(out["h_c_mixed"][1:], direct["h_c"])
     assert out["lubrication_regime"][0] == "open" and out["asperity_load_fraction"][0] == 0.0
     assert out["asperity_load_fraction"][1] > out["asperity_load_fraction"][2]  # slower: more asperity load
     assert out["mixed_valid"].dtype == bool and not out["mixed_valid"][0]
+
+
+def test_mixed_film_cycle_shares_the_load_on_the_scenes_own_film():
+    """A scene film 0.6 x Moes (a thermal reduction, another film model) thins the mixed film by the same
+    factor at equal share and raises the asperity share; an angle without a film is "unknown", not a guess."""
+    moes = Moes().evaluate(R[1:], W[1:], E, np.abs(U[1:]), STATE.eta0, STATE.alpha)["h_c"]
+    density = 0.05 / (6e-6 * 0.3e-6)
+    full = mixed_film_cycle(W[1:], R[1:], E, U[1:], STATE.eta0, STATE.alpha, moes, 0.3e-6, density, 6e-6, True)
+    thin = mixed_film_cycle(W[1:], R[1:], E, U[1:], STATE.eta0, STATE.alpha, 0.6 * moes, 0.3e-6, density, 6e-6,
+                            True)
+    assert np.all(thin["asperity_load_fraction"] > full["asperity_load_fraction"])
+    assert np.all(thin["h_c_mixed"] < full["h_c_mixed"])
+    lost = mixed_film_cycle(W[1:], R[1:], E, U[1:], STATE.eta0, STATE.alpha, np.array([np.nan, moes[1]]), 0.3e-6,
+                            density, 6e-6, True)
+    assert lost["lubrication_regime"][0] == "unknown" and np.isnan(lost["asperity_load_fraction"][0])
+    assert lost["h_c_mixed"][1] == pytest.approx(full["h_c_mixed"][1], rel=1e-12)
 
 
 def _contact():
@@ -119,8 +137,11 @@ def test_flat_follower_ehl_friction_ladder(thermal_steel_ls1):
     regimes = set(mixed["lubrication_regime"])
     assert {"mixed", "full_film"} <= regimes
     assert np.max(mixed["asperity_load_fraction"]) > 0.1
-    newtonian = run({"mixed"})
-    assert not np.asarray(newtonian["traction_valid"]).all()  # the Newtonian rung is flagged
+    newtonian = run({"mixed"}, OUT[:3] + OUT[5:] + ["fluid_traction_coefficient"])
+    # the Newtonian film (bounded by the limiting shear stress by default) sits on its plateau Lambda_L = 0.075
+    # wherever it shears, above Eyring's non-linear viscous traction
+    assert np.max(newtonian["fluid_traction_coefficient"]) <= 0.0751 and newtonian["traction_valid"].all()
+    assert newtonian["friction_power_mean"] > eyring["friction_power_mean"]
 
 
 def test_roller_with_fluid_traction_rolls_at_1000_rpm(thermal_steel_ls1):
@@ -170,3 +191,26 @@ def test_a_jumping_valve_train_with_every_friction_effect_keeps_its_open_angles_
         assert open_.any()
         force = np.asarray(result["friction_force"])
         assert np.all(np.isfinite(force)) and np.all(force[open_] == 0.0)
+
+
+def test_one_contact_steps_are_the_cycle_steps_at_one_angle():
+    """mixed_contact and contact_ehl_friction (the line-contact scene's steps) give the scalars of the per-angle
+    steps at a single angle, with the line scene's names (per unit length)."""
+    density = 0.05 / (6e-6 * 0.3e-6)
+    moes = Moes().evaluate(R[1], W[1], E, U[1], STATE.eta0, STATE.alpha)["h_c"]
+    one = mixed_contact(W[1], R[1], E, U[1], STATE.eta0, STATE.alpha, moes, 0.3e-6, density, 6e-6, True)
+    assert_provides(mixed_contact, one)
+    cycle = mixed_film_cycle(W[1:2], R[1:2], E, U[1:2], STATE.eta0, STATE.alpha, [moes], 0.3e-6, density, 6e-6, True)
+    assert isinstance(one["asperity_load_fraction"], float)
+    assert one["asperity_load_fraction"] == cycle["asperity_load_fraction"][0]
+    assert one["lubrication_regime"] == cycle["lubrication_regime"][0]
+    model = registry.get("traction_models", "eyring")
+    extra = {"asperity_load_fraction": one["asperity_load_fraction"], "h_c_mixed": one["h_c_mixed"],
+             "boundary_friction": 0.12}
+    line = contact_ehl_friction(model, W[1], 0.8e9, 1.2e-4, moes, 0.1, U[1], STATE, **extra)
+    assert_provides(contact_ehl_friction, line)
+    per_angle = ehl_sliding_friction(model, W[1:2], np.array([0.8e9]), np.array([1.2e-4]), np.array([moes]),
+                                     np.array([0.1]), U[1:2], STATE, **extra)
+    assert line["friction_per_length"] == per_angle["friction_force"][0]
+    assert line["traction_coefficient"] == per_angle["friction_coefficient"][0]
+    assert line["traction_regime"] == per_angle["traction_regime"][0]

@@ -56,6 +56,20 @@ def test_friction_power_mean_of_a_periodic_signal():
     assert out["friction_energy_per_cycle"] == pytest.approx(40.0 * 2 * math.pi / 100.0, rel=1e-12)
 
 
+def test_friction_energy_follows_the_cam_speed_over_the_turn():
+    """A cam accelerating from 100 to 200 rad/s over the turn (omega^2 = omega0^2 + 2 a theta) under a constant
+    50 W: the energy is P times the turn's duration, int dtheta/omega = 2 pi (omega1 - omega0)/(omega1^2 -
+    omega0^2) x 2 = 4 pi/300 s (exact for the linear-in-time speed), and the time mean is 50 W."""
+    theta = np.linspace(0.0, 2.0 * math.pi, 20001)[:-1]
+    a = (200.0**2 - 100.0**2) / (4.0 * math.pi)
+    omega = np.sqrt(100.0**2 + 2.0 * a * theta)
+    out = friction_power_mean(np.full(theta.size, 50.0), omega, theta)
+    assert out["friction_power_mean"] == pytest.approx(50.0, rel=1e-12)
+    assert out["friction_energy_per_cycle"] == pytest.approx(50.0 * 4.0 * math.pi / 300.0, rel=1e-4)
+    # the speed at theta = 0 alone would give 50 x 2 pi/100 J, 50 % more
+    assert out["friction_energy_per_cycle"] < 0.7 * 50.0 * 2.0 * math.pi / 100.0
+
+
 def test_friction_torque_mean_and_peak_drive_torque():
     """T_f = 2 (1 + cos theta) N m: mean 2 N m; drive torque 10 sin theta + T_f peaks near 10.2 N m."""
     friction = 2.0 * (1 + np.cos(THETA))
