@@ -295,8 +295,8 @@ FRICTION_LADDER = (
 def friction_rows(step_deg: float, level: int, repeats: int) -> pd.DataFrame:
     """The friction ladder over the LS-1 flat-follower turn at 1000 rpm (steel with thermal data, an oil with
     beta = 0.03 1/K and k = 0.13 W/(m K)): cycle-mean friction power, energy per turn, peak coefficient and
-    the cost per angle of each rung. The multigrid rung changes the film the fluid shears (the traction is
-    still integrated over the Hertz pressure)."""
+    the cost per angle of each rung. The multigrid rung shears the numerical film and integrates the shear
+    stress over the numerical pressure at every angle with a solution (the Hertz pressure elsewhere)."""
     import attrs
 
     import camcontact as cc

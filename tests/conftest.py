@@ -14,6 +14,24 @@ def steel():
     return cc.Material(E="210 GPa", nu=0.3, name="steel")
 
 
+@pytest.fixture(scope="session")
+def thermal_steel_ls1():
+    """The default LS-1 scene (1000 rpm) with a flat-faced follower, both bodies steel with thermal data
+    (rho 7850 kg/m^3, c 460 J/(kg K), k 47 W/(m K): textbook values for bearing steel) and the oil's
+    temperature-viscosity coefficient beta = 0.03 1/K and conductivity 0.13 W/(m K) (mineral oil orders of
+    magnitude): what the thermal traction and the inlet correction need."""
+    import attrs
+
+    from camcontact.scene_file import load_scene
+
+    scene = load_scene().component
+    steel = cc.Material(E="210 GPa", nu=0.3, density="7850 kg/m^3", specific_heat="460 J/kg/K",
+                        thermal_conductivity="47 W/m/K")
+    oil = attrs.evolve(scene.lubricant, thermoviscous_coefficient="0.03 1/K", thermal_conductivity="0.13 W/m/K")
+    return attrs.evolve(scene, lubricant=oil, cam=attrs.evolve(scene.cam, material=steel),
+                        follower=cc.Follower.flat(material=steel, roughness="0.2 um"))
+
+
 @pytest.fixture
 def clean_registry():
     """Forget discovered plugins before and after a test that fakes entry points."""

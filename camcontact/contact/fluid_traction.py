@@ -79,7 +79,8 @@ converged EHL solution, and the mean pressure and mean shear stress of the therm
 meaning (per unit area of the Hertz band 2b). Every node counts: the inlet and outlet nodes with
 p ~ 0 contribute their Couette shear tau(eta0, u_s/h(x)) (zero where a limiting shear stress through
 the origin, tau_L0 = 0, bounds it by Lambda_L p). The regime's area fractions are taken over the
-loaded nodes (p > 0) only. The trapezoid rule is second order for the smooth parts and O(dx^1.5) at
+loaded nodes of the Hertz band (p > 0, |x| <= b), as the Hertz path takes them over the Hertz area (the
+long, lightly loaded inlet of a numerical solution would otherwise outvote the contact). The trapezoid rule is second order for the smooth parts and O(dx^1.5) at
 the square-root edges of a Hertz-like pressure (mu within 3e-5 of the Hertz path at 2049 nodes on
 [-2, 1.5], the tests). The thermal balance keeps the central film h_c in its film-rise term. A profile
 may carry a leading batch shape (e.g. one profile per cam angle) that broadcasts with the other
@@ -437,12 +438,13 @@ class FluidTractionContact:
             self.ratio, self.weight = _nodes(int(n_nodes), geometry)
             #: mean pressure by the same rule as the shear stress (exact plateau ratio)
             self.mean_pressure = p_h * float(np.sum(self.weight * self.ratio))
-            #: loaded nodes (p > 0) of a profile, over which the regime fractions run (None: all nodes)
+            #: the loaded nodes of a profile within the Hertz band (p > 0, |x| <= b), over which the regime
+            #: fractions run, as the Hertz path's run over the Hertz area (None: all nodes)
             self.loaded = None
         else:
             self.ratio, self.weight = profile.pressure_ratio, profile.weights()
             self.mean_pressure = p_h * np.sum(self.weight * self.ratio, axis=-1)
-            self.loaded = self.ratio > 0.0
+            self.loaded = (self.ratio > 0.0) & (np.abs(profile.x_ratio) <= 1.0)
         self.p_h = p_h
         self.open = p_h == 0.0
         pressure = p_h[..., None] * self.ratio
@@ -548,7 +550,7 @@ class FluidTractionContact:
             film = np.where(film_per_stress > 0.0, film_per_stress * mean, 0.0)
         if self.loaded is None:
             total, area = float(np.sum(weight)), weight
-        else:  # area fractions of the loaded part (p > 0) of the profile
+        else:  # area fractions of the loaded part of the profile's Hertz band
             area = np.where(self.loaded if self.loaded.ndim == 1 else flat(self.loaded, True), weight, 0.0)
             total = np.sum(area, axis=-1)
         limited_fraction = _weighted(limited, area) / total if limited is not None else np.zeros(size)

@@ -62,7 +62,7 @@ def friction_steps(scene: CamFollower, friction: SlotModel, chosen: Mapping[str,
         table = Step.of(fluid_traction_table, extra=reads + extra) if ehl else Step.of(coulomb_traction_table)
         return [*mixed, table, Step.of(roller_spin), Step.of(cam_friction_torque)]
     if ehl:
-        sliding = Step.of(ehl_sliding_friction, extra=reads + extra)
+        sliding = Step.of(ehl_sliding_friction, extra=reads + extra, optional=("film_solutions",))
     else:
         sliding = Step.of(cam_friction, extra=friction.requires, optional=friction.optional)
     return [*mixed, sliding, Step.of(sliding_tangential_force), Step.of(cam_friction_torque)]

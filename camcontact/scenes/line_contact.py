@@ -90,7 +90,7 @@ def film_steps(film_model: Any, thermal: bool) -> list[Step]:
     reads = model_reads(film_model)
     steps = [
         Step.of(ehl_groups),
-        Step.of(line_film, provides=(*isothermal, "film_validity"), extra=reads.required, optional=reads.optional),
+        Step.of(line_film, provides=(*isothermal, "film_validity", "film_solution"), extra=reads.required, optional=reads.optional),
         Step.of(thermal_films if thermal else isothermal_films, extra=isothermal, provides=films),
         *(Step.of(film_parameter, name="lambda" if q == basis else f"lambda_{q[2:]}",
                   rename={"h": q, "Lambda": f"Lambda_{q[2:]}"}) for q in films),
@@ -105,7 +105,8 @@ def friction_steps(effects: frozenset, thermal_traction: bool) -> list[Step]:
         return []
     reads = ("asperity_load_fraction", "h_c_mixed", "boundary_friction") if "mixed" in effects else ()
     extra = reads + (("effusivity",) if thermal_traction else ())
-    return [*([Step.of(mixed_contact)] if "mixed" in effects else []), Step.of(contact_ehl_friction, extra=extra)]
+    return [*([Step.of(mixed_contact)] if "mixed" in effects else []), Step.of(contact_ehl_friction, extra=extra,
+                                                                          optional=("film_solution",))]
 
 
 @scene_builder(LineContact)

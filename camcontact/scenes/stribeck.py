@@ -15,10 +15,12 @@ Tribol. Int. 33:175–181, the model; Hamrock, Schmid & Jacobson 2004 §1 for th
 >>> oil = cc.Lubricant(nu40="100 cSt", nu100="11 cSt", density="870 kg/m^3", alpha="22 1/GPa")
 >>> contact = cc.LineContact(body1=cc.Body(material=steel, radius="20 mm", speed="2.1 m/s", roughness="0.2 um"),
 ...                          body2=cc.Body(material=steel, radius="20 mm", speed="1.9 m/s", roughness="0.2 um"),
-...                          load="5 kN", length="10 mm", lubricant=oil, temperature="60 degC")
->>> curve = stribeck_sweep(contact, [0.01, 0.1, 1.0, 10.0])
+...                          load="150 N", length="10 mm", lubricant=oil, temperature="60 degC")
+>>> curve = stribeck_sweep(contact, [0.001, 0.1, 3.0, 30.0])
 >>> list(curve["lubrication_regime"])
-['boundary', 'mixed', 'mixed', 'full_film']
+['boundary', 'boundary', 'mixed', 'full_film']
+>>> [round(mu, 3) for mu in curve["traction_coefficient [-]"]]
+[0.114, 0.067, 0.004, 0.007]
 """
 
 from __future__ import annotations

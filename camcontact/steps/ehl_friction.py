@@ -145,18 +145,45 @@ def _fluid(traction_model, p_h, b, h, u_m, lubricant_state, inputs):
                                   np.where(usable, u_m, 1.0), lubricant_state, inputs.get("effusivity")), usable
 
 
+def _on_numerical_pressure(traction_model, fluid, usable, solutions, p_h, b, h, u_s, u_m, lubricant_state, inputs):
+    """``fluid`` with the angles that have a numerical line solution re-evaluated over its pressure and film
+    profile (:meth:`camcontact.ehl.line_solution.LineEHLSolution.traction_profile`) instead of the Hertz
+    pressure with a uniform film."""
+    chosen = [i for i, solution in enumerate(solutions) if solution is not None and usable[i]
+              and hasattr(solution, "traction_profile")]
+    if not chosen:
+        return fluid
+    fields = {name: np.array(getattr(fluid, name), copy=True) for name in fluid._fields}
+    for i in chosen:
+        contact = traction_model.contact(p_h[i], b[i], h[i], u_m[i], lubricant_state, inputs.get("effusivity"),
+                                         profile=solutions[i].traction_profile())
+        one = contact.solve(u_s[i])
+        for name, values in fields.items():
+            values[i] = getattr(one, name)
+    return type(fluid)(**fields)
+
+
 @step("friction", provides=("friction_force", "friction_coefficient", "friction_power", "fluid_traction_coefficient",
                             "traction_regime", "traction_temperature_rise", "traction_valid"),
       model=lambda traction_model: f"{traction_model.name} fluid + boundary")
 def ehl_sliding_friction(traction_model, normal_force, p_h, b, h_c, u_s, u_m, lubricant_state, **inputs):
     """Friction of a sliding contact at each angle: mu_b W_asperity + mu_fluid(u_s) W_fluid [N] (``inputs``:
     the mixed step's ``asperity_load_fraction`` and ``h_c_mixed``, the lubricant's ``boundary_friction``, the
-    surfaces' ``effusivity`` for a thermal traction model), its coefficient [-], power F |u_s| [W], the fluid's
-    traction coefficient, regime ("linear", "nonlinear", "plateau", "open"), temperature rise [K] and
-    whether the fluid coefficient is a physical one (<= :data:`FLUID_TRACTION_LIMIT`)."""
+    surfaces' ``effusivity`` for a thermal traction model, the numerical film's ``film_solutions``), its
+    coefficient [-], power F |u_s| [W], the fluid's traction coefficient, regime ("linear", "nonlinear",
+    "plateau", "open"), temperature rise [K] and whether the fluid coefficient is a physical one
+    (<= :data:`FLUID_TRACTION_LIMIT`).
+
+    The fluid's shear stress is integrated over the Hertz pressure with the central film, or — at the angles
+    where the film model left a numerical line solution (``film="multigrid"``) — over that solution's pressure
+    and film (the film scaled to the scene's h_c: its thermal or mixed reduction)."""
     h = _traction_film(h_c, inputs)
     contact, usable = _fluid(traction_model, p_h, b, h, u_m, lubricant_state, inputs)
     fluid = contact.solve(np.where(usable, u_s, 0.0))
+    if inputs.get("film_solutions") is not None:
+        arrays = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (p_h, b, h, u_s, u_m)))
+        fluid = _on_numerical_pressure(traction_model, fluid, np.broadcast_to(usable, arrays[0].shape),
+                                       inputs["film_solutions"], *arrays, lubricant_state, inputs)
     asperity, carried, mu_b = _shares(normal_force, inputs)
     force = np.abs(mu_b * asperity * np.sign(u_s) + fluid.coefficient * carried)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -211,7 +238,10 @@ def mixed_contact(w, R, E_reduced, u_m, eta0, alpha_effective, h_c, sigma, asper
 def contact_ehl_friction(traction_model, w, p_h, b, h_c, u_s, u_m, lubricant_state, **inputs):
     """:func:`ehl_sliding_friction` of one line contact at its sliding speed u_s = u1 - u2: the friction force
     per unit length [N/m], the contact's friction (traction) coefficient [-], the friction power per unit
-    length [W/m] and the fluid's coefficient, regime, temperature rise [K] and validity."""
+    length [W/m] and the fluid's coefficient, regime, temperature rise [K] and validity (over the numerical
+    pressure of ``film_solution`` when the film model left one)."""
+    if "film_solution" in inputs:
+        inputs["film_solutions"] = [inputs.pop("film_solution")]
     values = ehl_sliding_friction(traction_model, np.atleast_1d(w), np.atleast_1d(p_h), np.atleast_1d(b),
                                   np.atleast_1d(h_c), np.atleast_1d(u_s), np.atleast_1d(u_m), lubricant_state,
                                   **inputs)

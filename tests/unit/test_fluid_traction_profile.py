@@ -260,3 +260,16 @@ def test_bad_profile_use_names_the_field():
         profile.pressure_ratio[0] = 1.0
     with pytest.raises(AttributeError):
         profile.film_ratio = F5
+
+
+def test_multigrid_regime_counts_the_hertz_band_not_the_inlet(multigrid_case):
+    """The regime of a numerical profile is decided over the Hertz band |x| <= b, as over the Hertz area in
+    the Hertz path: the long pressurised inlet of the solution (X down to -4, p << p_h, linear viscous)
+    must not outvote the contact. At S = 0.05 both paths call the contact non-linear (Eyring)."""
+    _, solution, values, state, u_m = multigrid_case
+    model = EyringTraction()
+    inputs = {"p_h": values["p_h"], "b": values["b"], "h_c": values["h_c"], "u_m": u_m, "lubricant_state": state}
+    hertz = model.contact(**inputs).solve(0.05 * u_m)
+    numerical = model.contact(**inputs, profile=solution.traction_profile()).solve(0.05 * u_m)
+    assert hertz.regime == "nonlinear" and numerical.regime == "nonlinear"
+    assert numerical.nonlinear_fraction == pytest.approx(hertz.nonlinear_fraction, abs=0.1)

@@ -121,3 +121,21 @@ def test_stribeck_plot_draws_every_curve():
     assert {"μ mixed", "μ smooth"} <= {line.get_label() for line in ax.lines}
     with pytest.raises(InputError, match="labels"):
         plot_stribeck_curve(curves, labels=["one"])
+
+
+def test_with_a_numerical_film_the_traction_runs_over_its_pressure():
+    """film="multigrid": the contact's traction is the traction model's over the solution's pressure and film
+    profile (an independent call with the solution the scene kept), a few per cent from the Hertz path's."""
+    from camcontact.models.film_multigrid import Multigrid
+
+    result = cc.Analysis(contact("5 kN"), effects=BASE | {"non_newtonian"}, models={"film": Multigrid(levels=7)},
+                         outputs=["p_h", "b", "h_c", "u_m", "traction_coefficient", "film_solution"]).run()
+    solution = result["film_solution"]
+    assert solution.record.converged
+    model = registry.get("traction_models", "eyring")
+    state = OIL.state(333.15)
+    args = (result["p_h"], result["b"], result["h_c"], result["u_m"], state)
+    numerical = model.contact(*args, profile=solution.traction_profile()).coefficient(0.2)
+    assert result["traction_coefficient"] == pytest.approx(numerical, rel=1e-12)
+    hertz = model.contact(*args).coefficient(0.2)
+    assert 0.0 < abs(numerical / hertz - 1.0) < 0.1

@@ -105,16 +105,6 @@ def test_fluid_traction_table_is_monotone_and_reaches_the_plateau():
     assert np.all(ratio <= 0.075 * (1 + 1e-9)) and np.all(ratio > 0.07)
 
 
-@pytest.fixture(scope="module")
-def thermal_steel_ls1():
-    scene = load_scene().component
-    steel = cc.Material(E="210 GPa", nu=0.3, density="7850 kg/m^3", specific_heat="460 J/kg/K",
-                        thermal_conductivity="47 W/m/K")
-    oil = attrs.evolve(scene.lubricant, thermoviscous_coefficient="0.03 1/K", thermal_conductivity="0.13 W/m/K")
-    return attrs.evolve(scene, lubricant=oil, cam=attrs.evolve(scene.cam, material=steel),
-                        follower=cc.Follower.flat(material=steel, roughness="0.2 um"))
-
-
 BASE = {"elasticity", "piezoviscosity", "compressibility"}
 OUT = ["cam_angle", "friction_coefficient", "friction_power_mean", "lubrication_regime", "asperity_load_fraction",
        "traction_regime", "traction_valid", "traction_temperature_rise"]

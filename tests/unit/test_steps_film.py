@@ -105,7 +105,8 @@ def test_line_film_pan_hamrock_formula_and_validity():
 def test_line_film_moes_gives_only_h_c():
     """The Moes model provides h_c only: the step returns h_c_isothermal (Moes formula above) and the validity."""
     out = _line_film(registry.get("film_models", "moes"))
-    assert_provides(line_film, out, subset=("h_c_isothermal", "film_validity"))
+    assert_provides(line_film, out, subset=("h_c_isothermal", "film_validity", "film_solution"))
+    assert out["film_solution"] is None  # a formula leaves no numerical solution
     assert out["h_c_isothermal"] == pytest.approx(moes_h_c(2e5, 0.01, E_STEEL, 2.0, 0.05, 2e-8), rel=1e-12)
 
 
