@@ -29,7 +29,9 @@ How to add a step or an effect
    if it is on by default), then let the builder choose the steps it switches (``Step.of(thermal_films if
    "thermal" in effects else isothermal_films, ...)``) or pass it to a step as an input
    (``"piezoviscosity": "piezoviscosity" in effects``). Only the steps a requested output needs run, so an
-   effect costs nothing when nobody asks for what it changes.
+   effect costs nothing when nobody asks for what it changes. The outputs an asked-for effect calls for go
+   into the graph's ``effect_outputs`` as well as its default outputs: a default report then names an input
+   they miss instead of quietly leaving them out (as it does for the scene's other default outputs).
 
 The analysis checks the graph before running (a missing input is an InputError with the scene's hint),
 runs only the needed steps and records each step's model and wall time.

@@ -63,6 +63,8 @@ HINTS = {
     "sigma2": "set the roughness of body2 (Body.roughness, RMS)",
     "F": "give LineContact.load with length (the palmgren approach needs the total force)",
     "length": "give LineContact.length",
+    "asperity_density": "give LineContact.asperity_density and asperity_radius (the defaults need a composite "
+                        "roughness sigma > 0)",
     "effusivity": "give both materials thermal_conductivity, density and specific_heat (the thermal traction's "
                   "flash temperature), or leave out the thermal effect",
 }

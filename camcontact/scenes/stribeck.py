@@ -25,6 +25,7 @@ Tribol. Int. 33:175–181, the model; Hamrock, Schmid & Jacobson 2004 §1 for th
 
 from __future__ import annotations
 
+import numbers
 from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
@@ -100,7 +101,7 @@ def stribeck_sweep(contact: LineContact, entrainment_speeds: Any = None, *, slid
             raise InputError(f"stribeck_sweep: the contact's entrainment speed is {own:.6g} m/s; give "
                              "slide_roll_ratio (and entrainment_speeds)")
         slide_roll_ratio = (u1 - u2) / own
-    if isinstance(slide_roll_ratio, bool) or not isinstance(slide_roll_ratio, (int, float, np.floating)) \
+    if isinstance(slide_roll_ratio, bool) or not isinstance(slide_roll_ratio, numbers.Real) \
             or not np.isfinite(slide_roll_ratio) or abs(slide_roll_ratio) >= 2.0:
         raise InputError(f"stribeck_sweep: slide_roll_ratio = {slide_roll_ratio!r}; allowed: a number with "
                          "|s| < 2 (both surfaces moving in the entrainment direction)")
@@ -148,6 +149,10 @@ def plot_stribeck_curve(curves: Any, *, labels: Sequence[str] | None = None, ax:
             raise InputError("plot_stribeck_curve: the frame has no 'traction_coefficient [-]' (a stribeck_sweep)")
         u = frame["entrainment speed [m/s]"].to_numpy(dtype=float)
         mu = frame["traction_coefficient [-]"].to_numpy(dtype=float)
+        if not np.any(np.isfinite(mu)):
+            reasons = sorted(set(frame["error"])) if "error" in frame else []
+            raise InputError(f"plot_stribeck_curve: curve {label or k} has no finite friction coefficient "
+                             f"(every case failed: {reasons[:3]})")
         line, = ax.plot(u, mu, "-", lw=1.2, color=CURVE_COLOURS[k % len(CURVE_COLOURS)], label=f"μ {label}".strip())
         regimes = frame["lubrication_regime"].to_numpy(dtype=object) if "lubrication_regime" in frame else None
         valid = frame["mixed_valid"].to_numpy(dtype=bool) if "mixed_valid" in frame else np.ones(u.size, dtype=bool)
@@ -158,9 +163,10 @@ def plot_stribeck_curve(curves: Any, *, labels: Sequence[str] | None = None, ax:
                     if chosen.any():
                         ax.plot(u[chosen], mu[chosen], "o", ms=4, color=colour, mfc=colour if inside else "none",
                                 label=regime if inside else f"{regime}, asperity capacity < 1 (share a lower bound)")
-        if "Lambda_mixed [-]" in frame.columns:
+        lam = frame["Lambda_mixed [-]"].to_numpy(dtype=float) if "Lambda_mixed [-]" in frame.columns else None
+        if lam is not None and np.any(np.isfinite(lam) & (lam > 0.0)):
             lam_ax = lam_ax or ax.twinx()
-            lam_ax.plot(u, frame["Lambda_mixed [-]"].to_numpy(dtype=float), ":", color=line.get_color())
+            lam_ax.plot(u, lam, ":", color=line.get_color())
     if lam_ax is not None:
         lam_ax.set_yscale("log")
         lam_ax.set_ylabel("Λ = h_c / σ (dotted) [-]")

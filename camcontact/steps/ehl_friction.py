@@ -105,7 +105,8 @@ def mixed_film_cycle(w, R, E_reduced, u_m, eta0, alpha_effective, h_c, sigma, as
            "lubrication_regime": np.full(n, "open", dtype=object), "asperity_capacity": np.full(n, np.nan),
            "mixed_valid": np.zeros(n, dtype=bool)}
     h_c = np.broadcast_to(h_c, w.shape)
-    filmed = np.isfinite(h_c) & (h_c > 0.0)
+    # no entrainment (u_m = 0): no film by definition, the asperities carry the load (boundary), not unknown
+    filmed = np.isfinite(h_c) & ((h_c > 0.0) | (np.broadcast_to(u_m, w.shape) == 0.0))
     out["lubrication_regime"][(w > 0.0) & ~filmed] = "unknown"
     out["asperity_load_fraction"][(w > 0.0) & ~filmed] = np.nan
     loaded = (w > 0.0) & filmed

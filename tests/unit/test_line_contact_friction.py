@@ -121,6 +121,9 @@ def test_stribeck_plot_draws_every_curve():
     assert {"μ mixed", "μ smooth"} <= {line.get_label() for line in ax.lines}
     with pytest.raises(InputError, match="labels"):
         plot_stribeck_curve(curves, labels=["one"])
+    failed = curves[0].assign(**{"traction_coefficient [-]": np.nan, "Lambda_mixed [-]": np.nan, "error": "boom"})
+    with pytest.raises(InputError, match="no finite friction coefficient"):
+        plot_stribeck_curve(failed)
 
 
 def test_with_a_numerical_film_the_traction_runs_over_its_pressure():

@@ -55,6 +55,15 @@ def test_mixed_film_cycle_shares_the_load_on_the_scenes_own_film():
                             density, 6e-6, True)
     assert lost["lubrication_regime"][0] == "unknown" and np.isnan(lost["asperity_load_fraction"][0])
     assert lost["h_c_mixed"][1] == pytest.approx(full["h_c_mixed"][1], rel=1e-12)
+    # the load sharing runs on the scene's film itself: the smooth film of the model equals the scene's h_c
+    direct = mixed_line_contact(W[1:], R[1:], E, np.abs(U[1:]), STATE.eta0, STATE.alpha, 0.3e-6, density, 6e-6,
+                                film_scale=0.6)
+    np.testing.assert_allclose(direct["h_c_smooth"], 0.6 * moes, rtol=1e-12)
+    np.testing.assert_allclose(thin["h_c_mixed"], direct["h_c"], rtol=1e-12)
+    # no entrainment (u_m = 0, the film step's h_c = 0): boundary lubrication, the asperities' share, not unknown
+    still = mixed_film_cycle(W[1:2], R[1:2], E, np.array([0.0]), STATE.eta0, STATE.alpha, np.array([0.0]), 0.3e-6,
+                             density, 6e-6, True)
+    assert still["lubrication_regime"][0] == "boundary" and still["asperity_load_fraction"][0] > 0.0
 
 
 def _contact():

@@ -68,6 +68,16 @@ def test_friction_energy_follows_the_cam_speed_over_the_turn():
     assert out["friction_energy_per_cycle"] == pytest.approx(50.0 * 4.0 * math.pi / 300.0, rel=1e-4)
     # the speed at theta = 0 alone would give 50 x 2 pi/100 J, 50 % more
     assert out["friction_energy_per_cycle"] < 0.7 * 50.0 * 2.0 * math.pi / 100.0
+    # a power proportional to the speed, P = 0.5 omega W (a friction torque of 0.5 N m): energy = 0.5 x 2 pi J
+    # whatever the speed law, and the time mean = energy / (4 pi/300 s) = 75 W, not the angle mean of P
+    # (0.5 x mean omega over the angles = 77.8 W)
+    torque = friction_power_mean(0.5 * omega, omega, theta)
+    assert torque["friction_energy_per_cycle"] == pytest.approx(math.pi, rel=1e-12)
+    assert torque["friction_power_mean"] == pytest.approx(math.pi / (4.0 * math.pi / 300.0), rel=1e-4)
+    assert abs(torque["friction_power_mean"] - float(np.mean(0.5 * omega))) > 2.0
+    wear = wear_rate_mean(1e-12 * omega, omega, theta)
+    assert wear["wear_volume_per_cycle"] == pytest.approx(2e-12 * math.pi, rel=1e-12)
+    assert wear["wear_rate_mean"] == pytest.approx(2e-12 * math.pi / (4.0 * math.pi / 300.0), rel=1e-4)
 
 
 def test_friction_torque_mean_and_peak_drive_torque():
