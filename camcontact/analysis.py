@@ -173,11 +173,9 @@ class Analysis:
         if self.requested is None:
             outputs = tuple(o for o in graph.default_outputs if o in providers
                             and (o in graph.effect_outputs or not resolve(o, ())))
-        else:
-            outputs = tuple(o for o in self.requested if o in providers or o in graph.inputs)
-        if self.requested is None:
             self._check_reachable(graph, [o for o in outputs if o in graph.effect_outputs], resolve)
         else:
+            outputs = tuple(o for o in self.requested if o in providers or o in graph.inputs)
             unprovided = [o for o in self.requested if o not in outputs]
             if unprovided and len(self.variants) == 1:
                 known = sorted(name for name in providers if name in QUANTITIES)

@@ -80,8 +80,8 @@ meaning (per unit area of the Hertz band 2b). Every node counts: the inlet and o
 p ~ 0 contribute their Couette shear tau(eta0, u_s/h(x)) (zero where a limiting shear stress through
 the origin, tau_L0 = 0, bounds it by Lambda_L p). The regime's area fractions are taken over the
 loaded nodes of the Hertz band (p > 0, |x| <= b), as the Hertz path takes them over the Hertz area (the
-long, lightly loaded inlet of a numerical solution would otherwise outvote the contact). The trapezoid rule is second order for the smooth parts and O(dx^1.5) at
-the square-root edges of a Hertz-like pressure (mu within 3e-5 of the Hertz path at 2049 nodes on
+long, lightly loaded inlet of a numerical solution would otherwise outvote the contact). The trapezoid
+rule is second order for the smooth parts and O(dx^1.5) at the square-root edges of a Hertz-like pressure (mu within 3e-5 of the Hertz path at 2049 nodes on
 [-2, 1.5], the tests). The thermal balance keeps the central film h_c in its film-rise term. A profile
 may carry a leading batch shape (e.g. one profile per cam angle) that broadcasts with the other
 contact inputs. Over a multigrid solution (M = 20, L = 10, Roelands) the Eyring mu is 2-5 % below the

@@ -11,10 +11,10 @@ flat face, no model chosen        Coulomb mu N; with ``non_newtonian`` and/or ``
 any, ``models={"friction": m}``   the friction model m per angle (the roller then assumed rolling)
 ================================ =============================================================================
 
-The fluid's rheology is the model slot ``traction``: default ``"eyring"`` with ``non_newtonian``, else ``"newtonian"``,
-both bounded by the lubricant's limiting shear stress (its ``eyring_stress`` and limiting shear stress when it
-gives them; :func:`camcontact.steps.ehl_friction.fluid_traction_model`); with ``thermal`` its contact temperature rise lowers the viscosity (the materials'
-thermal data are needed). ``mixed`` adds Greenwood–Tripp asperity load sharing with the pair's asperity
+The fluid's rheology is the model slot ``traction``: default ``"eyring"`` with ``non_newtonian``, else
+``"newtonian"``, both bounded by the lubricant's limiting shear stress (its ``eyring_stress`` and limiting
+shear stress when it gives them; :func:`camcontact.steps.ehl_friction.fluid_traction_model`); with ``thermal``
+its contact temperature rise lowers the viscosity (the materials' thermal data are needed). ``mixed`` adds Greenwood–Tripp asperity load sharing with the pair's asperity
 parameters (``CamFollower.asperity_density`` / ``asperity_radius``) and the lubricant's ``boundary_friction``.
 """
 
@@ -25,8 +25,8 @@ from typing import Any
 
 from ..components.cam_follower import CamFollower
 from ..step_graph import Step
-from ..steps.ehl_friction import (EHL_EFFECTS, ehl_friction_inputs, ehl_sliding_friction, fluid_traction_table,
-                                  mixed_film_cycle)
+from ..steps.ehl_friction import (EHL_EFFECTS, MIXED_FRICTION_READS, ehl_friction_inputs, ehl_sliding_friction,
+                                  fluid_traction_table, mixed_film_cycle)
 from ..steps.film import composite_roughness_step
 from ..steps.friction import SlotModel, cam_friction
 from ..steps.roller import cam_friction_torque, coulomb_traction_table, roller_spin, sliding_tangential_force
@@ -55,7 +55,7 @@ def friction_steps(scene: CamFollower, friction: SlotModel, chosen: Mapping[str,
                    thermal_traction: bool) -> list[Step]:
     """The friction steps of the module table, with the camshaft torque of the tangential force."""
     ehl = bool(effects & EHL_EFFECTS) and "friction" not in chosen
-    reads = ("asperity_load_fraction", "h_c_mixed", "boundary_friction") if "mixed" in effects else ()
+    reads = MIXED_FRICTION_READS if "mixed" in effects else ()
     extra = ("effusivity",) if thermal_traction else ()
     mixed = [Step.of(composite_roughness_step), Step.of(mixed_film_cycle)] if "mixed" in effects else []
     if scene.follower.kind == "roller" and "friction" not in chosen:

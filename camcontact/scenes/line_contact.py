@@ -31,7 +31,8 @@ from ..components.line_contact import LineContact
 from ..errors import InputError
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import APPROACHES, line_geometry, line_hertz
-from ..steps.ehl_friction import EHL_EFFECTS, contact_ehl_friction, ehl_friction_inputs, fluid_traction_model, mixed_contact
+from ..steps.ehl_friction import (EHL_EFFECTS, MIXED_FRICTION_READS, contact_ehl_friction, ehl_friction_inputs,
+                                  fluid_traction_model, mixed_contact)
 from ..steps.film import (composite_roughness_step, ehl_groups, film_parameter, films_of, inlet_thermal_correction,
                           isothermal_films, line_film, lubrication_regime_step, model_reads, resolve_film_model,
                           thermal_films)
@@ -40,7 +41,7 @@ from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import line_subsurface_stresses
 from .line_contact_plots import plot_line_contact
 
-__all__ = ["DEFAULT_EFFECTS", "SUPPORTED_EFFECTS", "build_line_contact", "film_steps", "friction_steps",
+__all__ = ["DEFAULT_EFFECTS", "MIXED_OUTPUTS", "SUPPORTED_EFFECTS", "build_line_contact", "film_steps", "friction_steps",
            "line_contact_inputs"]
 
 SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "thermal", "mixed", "non_newtonian"})
@@ -92,7 +93,8 @@ def film_steps(film_model: Any, thermal: bool) -> list[Step]:
     reads = model_reads(film_model)
     steps = [
         Step.of(ehl_groups),
-        Step.of(line_film, provides=(*isothermal, "film_validity", "film_solution"), extra=reads.required, optional=reads.optional),
+        Step.of(line_film, provides=(*isothermal, "film_validity", "film_solution"), extra=reads.required,
+                optional=reads.optional),
         Step.of(thermal_films if thermal else isothermal_films, extra=isothermal, provides=films),
         *(Step.of(film_parameter, name="lambda" if q == basis else f"lambda_{q[2:]}",
                   rename={"h": q, "Lambda": f"Lambda_{q[2:]}"}) for q in films),
@@ -105,10 +107,10 @@ def friction_steps(effects: frozenset, thermal_traction: bool) -> list[Step]:
     """With ``mixed`` / ``non_newtonian``: the asperity load sharing and the contact's EHL friction."""
     if not effects & EHL_EFFECTS:
         return []
-    reads = ("asperity_load_fraction", "h_c_mixed", "boundary_friction") if "mixed" in effects else ()
-    extra = reads + (("effusivity",) if thermal_traction else ())
-    return [*([Step.of(mixed_contact)] if "mixed" in effects else []), Step.of(contact_ehl_friction, extra=extra,
-                                                                          optional=("film_solution",))]
+    reads = MIXED_FRICTION_READS if "mixed" in effects else ()
+    friction = Step.of(contact_ehl_friction, extra=reads + (("effusivity",) if thermal_traction else ()),
+                       optional=("film_solution",))
+    return [*([Step.of(mixed_contact)] if "mixed" in effects else []), friction]
 
 
 @scene_builder(LineContact)

@@ -34,6 +34,7 @@ import numpy as np
 from ..components.line_contact import LineContact
 from ..errors import InputError
 from ..units import to_quantity
+from .line_contact import MIXED_OUTPUTS
 
 __all__ = ["STRIBECK_OUTPUTS", "plot_stribeck_curve", "stribeck_sweep"]
 
@@ -117,9 +118,7 @@ def stribeck_sweep(contact: LineContact, entrainment_speeds: Any = None, *, slid
 
     grid = pd.DataFrame({"body1.speed": [f"{float(u * (1.0 + 0.5 * s))!r} m/s" for u in speeds],
                          "body2.speed": [f"{float(u * (1.0 - 0.5 * s))!r} m/s" for u in speeds]})
-    outputs = [q for q in STRIBECK_OUTPUTS
-               if "mixed" in effects or q not in ("Lambda_mixed", "asperity_load_fraction", "lubrication_regime",
-                                                  "mixed_valid")]
+    outputs = [q for q in STRIBECK_OUTPUTS if "mixed" in effects or q not in MIXED_OUTPUTS]
     analysis = Analysis(contact, outputs=outputs, models=dict(models or {}),
                         effects=effects | {"elasticity", "piezoviscosity"})
     frame = analysis.sweep(grid, progress=progress, executor=executor, table="cases")

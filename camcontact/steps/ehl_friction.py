@@ -23,7 +23,7 @@ from ..models.film_line import Moes
 from ..models.mixed_lubrication import mixed_line_contact
 from ..step_graph import step
 
-__all__ = ["ASPERITY_DEFAULTS", "EHL_EFFECTS", "FLUID_TRACTION_LIMIT", "contact_ehl_friction", "ehl_friction_inputs",
+__all__ = ["ASPERITY_DEFAULTS", "EHL_EFFECTS", "FLUID_TRACTION_LIMIT", "MIXED_FRICTION_READS", "contact_ehl_friction", "ehl_friction_inputs",
            "ehl_sliding_friction", "fluid_traction_model", "fluid_traction_table", "mixed_contact", "mixed_film_cycle"]
 
 #: effects that replace Coulomb friction by the EHL friction of the film
@@ -38,6 +38,8 @@ ASPERITY_DEFAULTS = (0.05, 0.05)
 FLUID_TRACTION_LIMIT = 0.15
 MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity",
                  "mixed_valid")
+#: what the friction steps read with ``mixed``: the mixed step's share and film, the lubricant's boundary friction
+MIXED_FRICTION_READS = ("asperity_load_fraction", "h_c_mixed", "boundary_friction")
 
 
 def ehl_friction_inputs(lubricant: Any, body1: Any, body2: Any, effects: frozenset, *,
