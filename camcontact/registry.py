@@ -57,7 +57,8 @@ BUILTIN_MODULES: dict[str, tuple[str, ...]] = {
     "friction_models": ("camcontact.models.friction",),
     "wear_models": ("camcontact.models.wear",),
     "life_models": ("camcontact.models.life_iso281", "camcontact.models.life_lundberg_palmgren"),
-    "traction_models": ("camcontact.models.traction", "camcontact.models.traction_fluid"),
+    "traction_models": ("camcontact.models.traction", "camcontact.models.traction_fluid",
+                        "camcontact.models.traction_spin"),
     "bearing_friction_models": ("camcontact.models.bearing_friction",),
 }
 

@@ -19,7 +19,12 @@ from ..units import (ANGLE, Component, Quantity, above_absolute_zero, format_qua
 from .lubricant import Lubricant
 from .material import Material
 
-__all__ = ["BallConeCVT", "LoadedBallConeCVT"]
+__all__ = ["ISO76_BALL_CONTACT_STRESS", "BallConeCVT", "LoadedBallConeCVT"]
+
+#: ISO 76:2006 §6.1.1: the basic static load rating of a ball bearing (other than self-aligning)
+#: corresponds to a calculated contact stress of 4200 MPa at the centre of the most heavily loaded
+#: contact (4600 MPa self-aligning ball, 4000 MPa roller bearings)
+ISO76_BALL_CONTACT_STRESS = "4200 MPa"
 
 _RIGHT = math.pi / 2
 
@@ -71,8 +76,14 @@ class BallConeCVT(Component):
         ``"reduction"`` (default): ratio = omega_in/omega_out = BC/DE (thesis Eq. 6.2, > 1 for a
         reduction); ``"speed"``: omega_out/omega_in (its appendix P-4).
     clamping : str
-        ``"thesis"`` (Eq. 6.17, default) or ``"axial_balance"`` (see
-        :mod:`camcontact.dynamics.ball_cone_loads`).
+        ``"axial_balance"`` (default: the cone's n contacts carry the loading cam's thrust, 5014 N per
+        contact at the thesis's 150 W, 60 rpm) or ``"thesis"`` (Saccheto's Eq. 6.17, 1254 N: statically
+        impossible, kept to reproduce the thesis's tables; see :mod:`camcontact.dynamics.ball_cone_loads`).
+    contact_stress_limit : Quantity or str
+        Largest allowed Hertz peak pressure [pressure] (default 4.2 GPa: the contact stress behind the
+        static load rating of ball bearings other than self-aligning, ISO 76:2006 §6.1.1). Above it
+        the report flags ``stress_limit_exceeded`` and warns; set a lower value for a design-practice
+        limit (e.g. a traction drive's fatigue rating).
     name : str
     """
 
@@ -91,7 +102,9 @@ class BallConeCVT(Component):
     cone_small_diameter: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
     ratio_convention: str = attrs.field(default="reduction", validator=one_of("reduction", "speed"))
-    clamping: str = attrs.field(default="thesis", validator=one_of("thesis", "axial_balance"))
+    clamping: str = attrs.field(default="axial_balance", validator=one_of("axial_balance", "thesis"))
+    contact_stress_limit: Quantity = quantity_field("[pressure]", default=ISO76_BALL_CONTACT_STRESS,
+                                                    validators=[positive("Pa")])
 
     def __attrs_post_init__(self) -> None:
         si, where = self.si, f"BallConeCVT {self.name!r}"

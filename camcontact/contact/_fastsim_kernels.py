@@ -33,11 +33,20 @@ T = T_pred; otherwise it slips and T = mu p T_pred/|T_pred|. Forces are sums of 
 dA = dx_j dy (mid-point rule); in full stick the sampled tractions are exact and the force
 error is the mid-point rule's, O(1/ny^2 + 1/nx^2).
 
-Pressure: the Hertz shape sqrt(1 - x^2/a^2 - y^2/b^2) at the element centres, scaled so that
-its discrete sum carries exactly ``normal_force`` (the continuous scale is 3N/(2 pi a b); the
-two differ by the quadrature error of the shape: -1.5 % at 10 x 10, -0.15 % at 40 x 40, -0.017 %
-at 160 x 160). With this normalisation the saturated force of full slip is exactly mu N on every
-grid, so the inverse solve can reach any force below mu N.
+Pressure (the traction bound mu p), selected by ``parabolic``:
+
+* ``parabolic`` true — Kalker's FASTSIM: the shape 1 - x^2/a^2 - y^2/b^2 (continuous scale
+  2N/(pi a b)). The flexibilities L1..L3 of :mod:`camcontact.contact.kalker` are Kalker's
+  calibration for this bound (Kalker 1982).
+* ``parabolic`` false — the semi-ellipsoidal Hertz shape sqrt(1 - x^2/a^2 - y^2/b^2) (continuous
+  scale 3N/(2 pi a b)).
+
+Either shape is sampled at the element centres and scaled so that its discrete sum carries
+exactly ``normal_force``; the grid scale differs from the continuous one by the quadrature error
+of the shape (Hertz: -1.5 % at 10 x 10, -0.15 % at 40 x 40, -0.017 % at 160 x 160; parabolic:
+-0.65 %, -0.036 %, -0.002 %). With this normalisation the saturated force of full slip is
+exactly mu N on every grid, so the inverse solve can reach any force below mu N. The stick
+tractions do not depend on the pressure, so neither does the linear (small-creepage) limit.
 """
 
 from __future__ import annotations
@@ -49,7 +58,7 @@ from ..jit import compile_kernel
 __all__ = ["PY", "compiled", "fastsim_strips"]
 
 
-def fastsim_strips(a, b, normal_force, mu, L1, L2, L3, nu_x, nu_y, phi, x, y, p, Tx, Ty, stick):
+def fastsim_strips(a, b, normal_force, mu, L1, L2, L3, nu_x, nu_y, phi, parabolic, x, y, p, Tx, Ty, stick):
     """FASTSIM on a strip grid; fills the (ny, nx) arrays and returns the totals.
 
     Parameters
@@ -64,6 +73,8 @@ def fastsim_strips(a, b, normal_force, mu, L1, L2, L3, nu_x, nu_y, phi, x, y, p,
         Flexibility parameters [m/Pa] (> 0).
     nu_x, nu_y, phi : float
         Longitudinal, lateral creepage [-] and spin creepage [1/m].
+    parabolic : bool
+        True: Kalker's parabolic pressure (FASTSIM); False: the semi-ellipsoidal Hertz pressure.
     x, y, p, Tx, Ty, stick : ndarray
         Outputs, float64 of shape (ny, nx) except ``y`` (ny,): element-centre x and strip-centre
         y [m], pressure p [Pa], tractions Tx, Ty [Pa] (float64) and the stick flag (bool).
@@ -85,7 +96,12 @@ def fastsim_strips(a, b, normal_force, mu, L1, L2, L3, nu_x, nu_y, phi, x, y, p,
             x_ij = half - (i + 0.5) * dx
             x[j, i] = x_ij
             s = 1.0 - (x_ij / a) ** 2 - (y_j / b) ** 2
-            p[j, i] = math.sqrt(s) if s > 0.0 else 0.0
+            if s <= 0.0:
+                p[j, i] = 0.0
+            elif parabolic:
+                p[j, i] = s
+            else:
+                p[j, i] = math.sqrt(s)
             shape_sum += p[j, i] * dx * dy
     scale = normal_force / shape_sum if shape_sum > 0.0 else 0.0
     rate_x = nu_x / L1

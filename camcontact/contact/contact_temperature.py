@@ -25,7 +25,7 @@ import math
 
 from ..errors import InputError
 
-__all__ = ["couette_temperature_rise", "flash_temperature"]
+__all__ = ["band_flash_per_flux", "couette_temperature_rise", "flash_temperature"]
 
 
 def flash_temperature(w: float, E_reduced: float, R: float, mu: float, u1: float, u2: float,
@@ -42,6 +42,22 @@ def flash_temperature(w: float, E_reduced: float, R: float, mu: float, u1: float
         raise InputError(f"flash_temperature: mu = {mu!r}; allowed >= 0")
     return (0.893 * w**0.75 * (E_reduced / (4.0 * R)) ** 0.25 * mu * abs(u1 - u2)
             / (effusivity1 * math.sqrt(u1) + effusivity2 * math.sqrt(u2)))
+
+
+def band_flash_per_flux(half_width: float, u1: float, u2: float, effusivity1: float, effusivity2: float) -> float:
+    """Maximum (exit) flash temperature per unit heat flux [K m^2/W] of a uniform band source of
+    half-width a [m] moving at high Peclet number through two surfaces at u1, u2 [m/s] with Blok's
+    partition (equal surface temperatures): 2 sqrt(2a/pi) / (e1 sqrt(u1) + e2 sqrt(u2)) (Jaeger 1942,
+    Blok 1937). It is the source behind :func:`flash_temperature`: with q = mu p_mean |u1 - u2| and
+    p_mean = w/(2a) the two agree to the rounding of Delabenetta's 0.893 (2 sqrt(2/pi) = 1.59577 against
+    0.893 x 2^(3/4) x 4^(1/4) / pi^(1/4) = 1.59533). Usable where the surfaces roll at equal speed
+    (spin and creep losses), where the flux is not mu p |u1 - u2|."""
+    for name, value in (("half_width", half_width), ("effusivity1", effusivity1), ("effusivity2", effusivity2)):
+        if not (math.isfinite(value) and value > 0.0):
+            raise InputError(f"band_flash_per_flux: {name} = {value!r}; allowed > 0")
+    if u1 < 0.0 or u2 < 0.0 or u1 + u2 == 0.0 or not (math.isfinite(u1) and math.isfinite(u2)):
+        raise InputError(f"band_flash_per_flux: u1 = {u1!r}, u2 = {u2!r} m/s; allowed: >= 0, not both 0")
+    return 2.0 * math.sqrt(2.0 * half_width / math.pi) / (effusivity1 * math.sqrt(u1) + effusivity2 * math.sqrt(u2))
 
 
 def couette_temperature_rise(beta: float, sliding_speed: float, eta: float, conductivity: float) -> float:

@@ -30,11 +30,42 @@ of the predicted traction, standard FASTSIM). L1, L2, L3 come from Kalker's C_ij
 (:mod:`camcontact.contact.kalker`). The discretisation is described in
 :mod:`camcontact.contact._fastsim_kernels`.
 
+Pressure of the traction bound (option ``pressure``)
+----------------------------------------------------
+``"parabolic"`` (default) — Kalker's FASTSIM (Kalker 1982, 1990):
+
+.. math:: p = \\frac{2N}{\\pi a b}\\left(1 - \\frac{x^2}{a^2} - \\frac{y^2}{b^2}\\right)
+
+(peak 2N/(pi a b); it carries N). The flexibilities L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),
+L3 = pi a sqrt(a/b)/(4 C23 G) make the simplified theory reproduce Kalker's linear creep
+coefficients whatever the bound; Kalker took this bound for FASTSIM because with it the
+simplified theory's creep-force curve up to saturation stays close to his exact theory (it is
+also the "parabolic traction bound" that Vollebregt's CONTACT uses with FASTSIM). For pure
+longitudinal creepage a strip of half-length a(y) and peak P(y) = 2N/(pi a b)(1 - y^2/b^2) then
+carries, in closed form, (4/3) mu P(y) a(y) (1 - (1 - u)^3), u = min(1, nu_x a(y)/(2 L1 mu P(y))).
+
+``"hertz"`` — the semi-ellipsoidal Hertz pressure
+
+.. math:: p = \\frac{3N}{2 \\pi a b}\\sqrt{1 - \\frac{x^2}{a^2} - \\frac{y^2}{b^2}}
+
+as the bound, with the same flexibilities: the reading of Saccheto's (2008) simulation (his
+Eqs 5.36 and 5.50–5.52 bound the traction by Ct times the local normal pressure, his §3.3 Hertz
+pressure), which the thesis convention reproduces (``Fastsim(pressure="hertz")``). L1..L3 are not
+calibrated for it. The Hertz bound is lower in the middle (peak 3N/(2 pi a b) against
+2N/(pi a b)) and higher towards the edge, so partial slip and the force near saturation differ:
+at the Forti CVT's input contact (Saccheto 2008, 150 W, 60 rpm, 1:1, thesis clamping, with spin)
+the creepage that transmits F_t is 0.0583 with "hertz" and 0.0536 with "parabolic".
+
+Both carry N exactly on the grid (:mod:`camcontact.contact._fastsim_kernels`), so full slip
+gives mu N with either; they agree in the linear limit (the stick tractions do not involve p).
+
 References
 ----------
 Kalker, J.J. (1982) A fast algorithm for the simplified theory of rolling contact, Vehicle System
-Dynamics 11:1–13. Saccheto, T.J.S. (2008) MSc dissertation, FEM/UNICAMP, §5.5, Eqs 5.36–5.54,
-Tabela 5.1.
+Dynamics 11:1–13 (the parabolic traction bound). Kalker, J.J. (1990) Three-dimensional elastic
+bodies in rolling contact, Kluwer (simplified theory, FASTSIM). Vollebregt, E.A.H., User guide for
+CONTACT, VORtech technical report TR09-03 (FASTSIM with the parabolic traction bound).
+Saccheto, T.J.S. (2008) MSc dissertation, FEM/UNICAMP, §5.5, Eqs 5.36–5.54, Tabela 5.1.
 """
 
 from __future__ import annotations
@@ -52,9 +83,12 @@ from .kalker import flexibility_parameters
 __all__ = [
     "DEFAULT_NX",
     "DEFAULT_NY",
+    "DEFAULT_PRESSURE",
+    "PRESSURES",
     "CreepageSolution",
     "FastsimResult",
     "GrossSlipError",
+    "check_pressure",
     "fastsim",
     "solve_creepage",
 ]
@@ -65,6 +99,10 @@ DEFAULT_NY = 40
 #: most bracket expansions (doublings) :func:`solve_creepage` tries before giving up
 MAX_BRACKET_EXPANSIONS = 200
 DIRECTIONS = ("x", "y")
+#: pressure shapes of the traction bound: Kalker's parabolic one (FASTSIM) and the Hertz semi-ellipsoid
+PRESSURES = ("parabolic", "hertz")
+#: Kalker's FASTSIM
+DEFAULT_PRESSURE = "parabolic"
 
 
 class GrossSlipError(InputError):
@@ -95,7 +133,7 @@ class FastsimResult:
     stick: np.ndarray  #: True where the element sticks, (ny, nx)
     Tx: np.ndarray  #: traction along x [Pa], (ny, nx)
     Ty: np.ndarray  #: lateral traction [Pa], (ny, nx)
-    p: np.ndarray  #: normal pressure [Pa], (ny, nx)
+    p: np.ndarray  #: pressure p of the traction bound mu p [Pa], (ny, nx): parabolic or Hertz (``pressure``)
     x: np.ndarray  #: element-centre x [m], (ny, nx)
     y: np.ndarray  #: strip-centre y [m], (ny,)
     dx: np.ndarray  #: element length of each strip [m], (ny,)
@@ -110,6 +148,7 @@ class FastsimResult:
     creepage_x: float  #: nu_x [-]
     creepage_y: float  #: nu_y [-]
     spin: float  #: phi [1/m]
+    pressure: str  #: shape of the traction bound, "parabolic" or "hertz"
 
     @property
     def force(self) -> float:
@@ -175,6 +214,16 @@ def _at_least(value, name: str, unit: str, low: float, strict: bool) -> float:
     return number
 
 
+def check_pressure(value, name: str = "pressure") -> str:
+    """``value`` if it is one of :data:`PRESSURES`, else an InputError naming ``name``, the value
+    and the allowed values."""
+    if not (isinstance(value, str) and value in PRESSURES):
+        raise InputError(f"{name} = {value!r}; allowed: 'parabolic' (Kalker's FASTSIM, p = 2N/(pi a b) "
+                         "(1 - x^2/a^2 - y^2/b^2)) or 'hertz' (the semi-ellipsoidal Hertz pressure, "
+                         "Saccheto 2008's reading)")
+    return value
+
+
 def _count(value, name: str) -> int:
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
         raise InputError(f"{name} = {value!r}; allowed: an integer >= 1 (number of {'elements per strip' if name == 'nx' else 'strips'})")
@@ -192,26 +241,28 @@ def _checked(a, b, normal_force, mu, shear_modulus, creepage_x, creepage_y, spin
 
 
 # ----------------------------------------------------------------- forward problem
-def _run(a, b, normal_force, mu, flexibilities, creepage_x, creepage_y, spin, nx, ny, use_compiled) -> FastsimResult:
+def _run(a, b, normal_force, mu, flexibilities, creepage_x, creepage_y, spin, nx, ny, use_compiled,
+         pressure) -> FastsimResult:
     x, p, Tx, Ty = (np.empty((ny, nx)) for _ in range(4))
     y = np.empty(ny)
     stick = np.empty((ny, nx), dtype=np.bool_)
     kernel = _fastsim_kernels.compiled("fastsim_strips") if use_compiled else _fastsim_kernels.PY["fastsim_strips"]
     L1, L2, L3 = flexibilities
     Fx, Fy, Mz, slip_area, area = kernel(a, b, normal_force, mu, L1, L2, L3, creepage_x, creepage_y, spin,
-                                         x, y, p, Tx, Ty, stick)
+                                         pressure == "parabolic", x, y, p, Tx, Ty, stick)
     return FastsimResult(
         Fx=float(Fx), Fy=float(Fy), Mz=float(Mz), slip_fraction=float(slip_area / area), stick=stick,
         Tx=Tx, Ty=Ty, p=p, x=x, y=y, dx=2.0 * a * np.sqrt(1.0 - (y / b) ** 2) / nx, dy=2.0 * b / ny,
         L1=L1, L2=L2, L3=L3, a=a, b=b, normal_force=normal_force, mu=mu,
-        creepage_x=creepage_x, creepage_y=creepage_y, spin=spin,
+        creepage_x=creepage_x, creepage_y=creepage_y, spin=spin, pressure=pressure,
     )
 
 
 def fastsim(a: float, b: float, normal_force: float, mu: float, shear_modulus: float,
             creepage_x: float = 0.0, creepage_y: float = 0.0, spin: float = 0.0, *,
             nx: int = DEFAULT_NX, ny: int = DEFAULT_NY, compiled: bool = True,
-            coefficients: tuple[float, float, float] | None = None) -> FastsimResult:
+            coefficients: tuple[float, float, float] | None = None,
+            pressure: str = DEFAULT_PRESSURE) -> FastsimResult:
     """Kalker's FASTSIM: creep forces and stick/slip of an elliptical Hertz contact.
 
     .. math::
@@ -220,8 +271,10 @@ def fastsim(a: float, b: float, normal_force: float, mu: float, shear_modulus: f
         T_i = \\begin{cases} T^{pred}_i & |T^{pred}_i| \\le \\mu p_i \\\\
         \\mu p_i\\,T^{pred}_i/|T^{pred}_i| & \\text{otherwise} \\end{cases}
 
-    marched along each strip from the leading edge x = +a(y) (T = 0), with the Hertz pressure
-    p = 3N/(2 pi a b) sqrt(1 - x^2/a^2 - y^2/b^2) (normalised on the grid to carry exactly N).
+    marched along each strip from the leading edge x = +a(y) (T = 0), with Kalker's parabolic
+    pressure p = 2N/(pi a b) (1 - x^2/a^2 - y^2/b^2) (default) or the Hertz pressure
+    p = 3N/(2 pi a b) sqrt(1 - x^2/a^2 - y^2/b^2) (``pressure="hertz"``), normalised on the grid to
+    carry exactly N (module docstring).
 
     Parameters
     ----------
@@ -245,6 +298,9 @@ def fastsim(a: float, b: float, normal_force: float, mu: float, shear_modulus: f
         Use the numba kernel (default) or its plain-Python twin.
     coefficients : tuple of float, optional
         Kalker's (C11, C22, C23) [-]; default: Saccheto (2008) Tabela 5.1 interpolated at b/a.
+    pressure : {"parabolic", "hertz"}
+        Pressure of the traction bound: "parabolic", Kalker's FASTSIM (default), or "hertz", the
+        semi-ellipsoidal Hertz pressure (Saccheto 2008's reading).
 
     Returns
     -------
@@ -263,8 +319,9 @@ def fastsim(a: float, b: float, normal_force: float, mu: float, shear_modulus: f
     """
     a, b, N, mu, G, nu_x, nu_y, phi, nx, ny = _checked(a, b, normal_force, mu, shear_modulus,
                                                        creepage_x, creepage_y, spin, nx, ny)
+    pressure = check_pressure(pressure)
     flexibilities = flexibility_parameters(a, b, G, coefficients=coefficients)
-    return _run(a, b, N, mu, flexibilities, nu_x, nu_y, phi, nx, ny, compiled)
+    return _run(a, b, N, mu, flexibilities, nu_x, nu_y, phi, nx, ny, compiled, pressure)
 
 
 # ----------------------------------------------------------------- inverse problem
@@ -281,7 +338,7 @@ def solve_creepage(required_force: float, a: float, b: float, normal_force: floa
                    shear_modulus: float, spin: float = 0.0, direction: str = "x", *,
                    other_creepage: float = 0.0, nx: int = DEFAULT_NX, ny: int = DEFAULT_NY,
                    compiled: bool = True, coefficients: tuple[float, float, float] | None = None,
-                   maxiter: int = 200) -> CreepageSolution:
+                   pressure: str = DEFAULT_PRESSURE, maxiter: int = 200) -> CreepageSolution:
     """The creepage at which FASTSIM transmits a required force (force-controlled FASTSIM).
 
     Solves F_d(nu_d) = required_force for nu_d (d = ``direction``: nu_x and Fx, or nu_y and Fy)
@@ -301,8 +358,8 @@ def solve_creepage(required_force: float, a: float, b: float, normal_force: floa
     ----------
     required_force : float
         Target force component F_d on the body [N], |F| < mu N.
-    a, b, normal_force, mu, shear_modulus, nx, ny, compiled, coefficients
-        As in :func:`fastsim`.
+    a, b, normal_force, mu, shear_modulus, nx, ny, compiled, coefficients, pressure
+        As in :func:`fastsim` (``pressure``: "parabolic", Kalker's, default, or "hertz").
     spin : float
         Spin creepage phi [1/m].
     direction : {"x", "y"}
@@ -336,6 +393,7 @@ def solve_creepage(required_force: float, a: float, b: float, normal_force: floa
     required = _finite(required_force, "required_force", "[N]")
     a, b, N, mu, G, _, _, phi, nx, ny = _checked(a, b, normal_force, mu, shear_modulus, 0.0, 0.0, spin, nx, ny)
     other = _finite(other_creepage, "other_creepage", "[-]")
+    pressure = check_pressure(pressure)
     flexibilities = flexibility_parameters(a, b, G, coefficients=coefficients)
     limit = mu * N
     if abs(required) >= limit and required != 0.0:
@@ -344,7 +402,7 @@ def solve_creepage(required_force: float, a: float, b: float, normal_force: floa
 
     def run(nu: float) -> FastsimResult:
         creepages = (nu, other) if direction == "x" else (other, nu)
-        return _run(a, b, N, mu, flexibilities, *creepages, phi, nx, ny, compiled)
+        return _run(a, b, N, mu, flexibilities, *creepages, phi, nx, ny, compiled, pressure)
 
     def residual(nu: float) -> float:
         result = run(nu)

@@ -138,6 +138,7 @@ __all__ = [
     "FluidTractionContact",
     "PressureProfile",
     "TractionThermal",
+    "asinh_exp",
     "fluid_traction",
     "traction_coefficient",
     "traction_curve",
@@ -361,8 +362,8 @@ def _weighted(values: np.ndarray, weight: np.ndarray) -> np.ndarray:
     return np.einsum("...i,...i->...", values, weight)
 
 
-def _asinh_exp(L: np.ndarray) -> np.ndarray:
-    """asinh(exp(L)) without overflow."""
+def asinh_exp(L: np.ndarray) -> np.ndarray:
+    """asinh(exp(L)) without overflow (the Eyring stress tau0 asinh(eta gamma/tau0) from L = ln(eta gamma/tau0))."""
     with np.errstate(over="ignore", under="ignore"):
         out = np.arcsinh(np.exp(np.minimum(L, _ASINH_SWITCH)))
     return np.where(L > _ASINH_SWITCH, L + _LN2, out)
@@ -476,7 +477,7 @@ class FluidTractionContact:
         ln|gamma h| = ln|u_s| (trailing axis of the nodes added here) and beta dT."""
         L = log_base + (log_rate - dT_beta)[..., None]
         if self.rheology == "eyring":
-            tau = tau0 * _asinh_exp(L)
+            tau = tau0 * asinh_exp(L)
         else:
             with np.errstate(over="ignore"):
                 tau = np.exp(L)

@@ -415,8 +415,11 @@ def slice_extremum(s, p, q=None, *, measure: str = "max_shear", x=None, z=None, 
     measure : str
         ``"max_shear"``: the Mohr maximum shear sqrt(((sx - sz)/2)^2 + txz^2) (Saccheto Eq. 3.71
         corrected; what his Ch. 7 simulation uses); ``"orthogonal"``: |tau_xz|, the maximum
-        orthogonal shear of Lundberg & Palmgren (Saccheto §5.4). The thesis is ambiguous about
-        which one fed its life model; both are offered.
+        orthogonal shear of Lundberg & Palmgren (Saccheto §5.4; the ball-cone scene's default).
+        The thesis is ambiguous about which one fed its life model; both are offered. With
+        traction the tau_xz cycle is lopsided: its peak |tau_xz| (``tau0``) then exceeds the
+        amplitude, half of ``orthogonal_range`` (see
+        :mod:`camcontact.models.life_lundberg_palmgren`).
     x, z : array_like, optional
         1-D search axes [m] (strictly increasing, z >= 0). Default: 161 points over
         [s_0 - L/4, s_N + L/4] and 97 over [0, 3L/4], L = s_N - s_0.

@@ -7,8 +7,8 @@ volume V_z after eta stress cycles obeys (Eq. 5.13)
 .. math::
     \\ln\\frac{1}{S} \\propto \\frac{\\tau_0^{\\,c}\\, \\eta^{\\,e}\\, V_z}{Z_0^{\\,h}}
 
-with tau_0 the critical (maximum orthogonal, or Mohr maximum) shear stress [Pa] at depth
-Z_0 [m]. At S = 0.9 this gives the L10 life in millions of stress cycles (Eqs. 5.16, 5.25)
+with tau_0 the critical shear stress [Pa] at depth Z_0 [m] (which shear: see below). At S = 0.9
+this gives the L10 life in millions of stress cycles (Eqs. 5.16, 5.25)
 
 .. math::
     H_{10} = \\left(\\frac{K\\, Z_0^{\\,h}}{\\tau_0^{\\,c}\\, V_z}\\right)^{1/e}, \\qquad
@@ -21,12 +21,55 @@ h = 7/3, e = 10/9 for elliptical contacts and e = 3/2 for line contacts as Sacch
 e = 3/2 gives P'^-3, the same load law as the elliptical contact; keep ``e`` configurable),
 and K = 1.428e95 (Coy 1975).
 
-**Units of K.** Neither Saccheto nor the reference report states them. SI (tau_0 in Pa, lengths
-in m, H_10 in millions of cycles) is assumed here: it gives L10 of about 3e9 cycles for a steel
-ball contact at p_0 = 1.8 GPa (Rx = 5 mm, Ry = 20 mm, F = 200 N, R = 23.28 mm, Mohr tau_0 of the
-slice with mu = 0.088), a plausible rolling-contact life, whereas psi and inch would give about
-1e44 cycles. Treat absolute lives as indicative; ratios between
-designs (the scaling laws below) do not depend on K.
+**Which shear.** Lundberg & Palmgren (1947) take for tau_0 the maximum *orthogonal* shear
+stress: the amplitude of the reversing shear tau_xz on the planes parallel and normal to the
+surface, which swings between +tau_0 and -tau_0 as the load rolls over a point, at its depth
+z_0 (frictionless line contact: tau_0 = 0.250 p_0 at z_0 = 0.5 b; Johnson 1985 §4.2). Saccheto
+§5.4, presenting Coy et al.'s form, describes tau_0 in the same words; his Ch. 7 simulation, however,
+takes "the maximum shear stress of the stress state", the Mohr radius of Eq. 3.71 (0.300 p_0 at
+0.786 b frictionless; the reference report §2.7 notes the ambiguity).
+camcontact offers both (:data:`camcontact.contact.slice_stress.MEASURES`): the ball-cone scene's
+``stress`` slot defaults to ``"orthogonal"`` (Lundberg–Palmgren), and ``stress="max_shear"``
+reproduces the thesis. The slice's ``"orthogonal"`` tau_0 is the *peak* |tau_xz|; with surface
+traction the reversing shear is lopsided and its peak exceeds its amplitude (half its range,
+:attr:`~camcontact.contact.slice_stress.SliceExtremum.orthogonal_range`).
+
+Life ratio orthogonal / Mohr, L_o/L_m = (tau_m/tau_o)^(c/e) (Z_o/Z_m)^((h-1)/e) at equal a and
+R (the depth enters V_z once, hence h - 1):
+
+* frictionless: (0.300/0.250)^9.3 = 5.45 from the stress alone (the "about 5x"), times
+  (0.5/0.786)^1.2 = 0.58 from the shallower depth: 3.2;
+* the Forti operating point (150 W, 60 rpm, 1:1, tutorials/forti_ball_cone_cvt.toml with the
+  thesis's clamping, F_n = 1254 N, p_h = 4.32 GPa; FASTSIM traction about 0.088 p in (near) full
+  slip): Mohr 0.304 p_h at 0.744 a, peak |tau_xz| 0.278 p_h at 0.457 a: 2.35 x 0.56 = 1.3 — as
+  for a Hertz strip in full slip with q = 0.088 p (1.31). The traction's own tau_xz adds to one
+  side of the reversing cycle: its amplitude (half range) stays 0.250 p_h and would give about
+  3.5. With the axial-balance clamping (F_n = 5015 N, p_h = 6.86 GPa, F_t = 0.022 F_n) the
+  ratio is about 1.9. Pinned by tests/unit/test_life_lp_shear_and_units.py.
+
+**Units of K.** Neither Saccheto nor the reference report
+(../shared/reference/ball_cone_cvt_saccheto2008.md §2.7, Eq. 5.17) states them, and no source
+stating them was found (searched: Coy, Loewenthal & Zaretsky NASA TN D-8362; Loewenthal &
+Zaretsky NASA RP-1154 §4.2; Zaretsky's NASA life-prediction reviews; none of their text was
+available). The basis is therefore an *assumption*, chosen on this evidence (computed, see
+tests/unit/test_life_lp_shear_and_units.py and tests/literature/test_lundberg_palmgren.py):
+
+* dimensions: with H_10 in millions of cycles, K carries stress^c length^(3-h). K read in
+  psi and inch equals K psi^c in^(3-h) = 10^38.60 K in Pa and m, so the same contact lives
+  10^(38.60/e) = 10^34.74 times longer in the US reading (kgf/mm^2 and mm, Lundberg &
+  Palmgren's own units: 10^63 times longer);
+* SI (``unit_basis="SI"``, the default: tau_0 in Pa, lengths in m) gives rolling-contact lives
+  in the range the theory was calibrated on: a steel ball contact (Rx = 5 mm, Ry = 20 mm,
+  R = 23.28 mm, frictionless) at p_0 = 1.43-2.27 GPa lives 9e10-1.4e9 cycles (orthogonal
+  shear; 3e10-4e8 with the Mohr shear), and the inner-ring contact of a 6206 ball bearing at
+  its rating load (P = C = 19.5 kN, Q_max = 4.37 P/Z = 9.5 kN, p_0 = 4.8 GPa) 1.0e5 inner-ring
+  revolutions, a decade below the rating's 1e6 (conservative: the whole track at Q_max);
+* psi and inch (``unit_basis="US"``) give 2e43-5e45 cycles and 6e39 revolutions for the same
+  contacts: no material lives that long, so the US reading is not plausible for K = 1.428e95.
+  (NASA Lewis reports of the period print SI first, psi in parentheses: consistent, not proof.)
+
+Treat absolute lives as indicative; ratios between designs (the scaling laws below) do not
+depend on K or its unit basis.
 
 **Consequences checked by the tests** (Hertz scaling: tau_0 ~ p_0 ~ (P rho^2)^(1/3),
 Z_0 ~ a ~ (P / rho)^(1/3)): H ~ P^((h - c - 2)/(3e)) = P^-3 (Eqs. 5.21, 5.33); for all lengths
@@ -54,7 +97,8 @@ References
 Lundberg, G. & Palmgren, A. (1947) Dynamic capacity of rolling bearings, Acta Polytechnica,
 Mech. Eng. Series 1(3). Coy, J.J., Loewenthal, S.H. & Zaretsky, E.V. (1976) Fatigue life
 analysis for traction drives with application to a toroidal type geometry, NASA TN D-8362.
-Saccheto, T.J.S. (2008) MSc dissertation, FEM/UNICAMP, §5.3–5.4, Eqs. 5.13–5.25.
+Johnson, K.L. (1985) Contact Mechanics, §4.2. Saccheto, T.J.S. (2008) MSc dissertation,
+FEM/UNICAMP, §3.4, §5.3–5.4, Eqs. 3.71, 5.13–5.25.
 """
 
 from __future__ import annotations
@@ -66,21 +110,31 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..units import in_range, number_field
+from ..units import in_range, number_field, one_of
 from .base import LifeModel, builtin, float_or_array
 
 __all__ = [
     "ELLIPTICAL_E",
     "LINE_E",
+    "UNIT_BASES",
     "LundbergPalmgren",
+    "life_constant_si",
     "life_time",
     "lundberg_palmgren_life",
     "stressed_volume",
     "system_life",
 ]
 
-#: Coy (1975) constant of Eq. 5.17 (units unstated; SI assumed, see the module docstring)
+#: Coy (1975) constant of Eq. 5.17 (units unstated in the sources; SI assumed on the evidence of
+#: the module docstring, "US" = psi and inch offered)
 K_COY = 1.428e95
+#: unit bases of K: "SI" (tau_0 in Pa, lengths in m; the default) and "US" (psi, inch); H_10 in
+#: millions of stress cycles in both
+UNIT_BASES = ("SI", "US")
+#: 1 psi [Pa] (1 lbf/in^2 = 0.45359237 kg x 9.80665 m/s^2 / 0.0254^2 m^2)
+PSI = 0.45359237 * 9.80665 / 0.0254**2
+#: 1 inch [m]
+INCH = 0.0254
 #: stress exponent c (Eq. 5.14)
 C_STRESS = 31.0 / 3.0
 #: depth exponent h (Eq. 5.14)
@@ -123,14 +177,34 @@ def stressed_volume(z0, a_transverse, track_radius):
     return float_or_array(2.0 * math.pi * v["track_radius"] * v["a_transverse"] * v["z0"])
 
 
+def _log_unit_factor(where: str, unit_basis: str, c: float, h: float) -> float:
+    """ln of the factor that turns K given in ``unit_basis`` into Pa^c m^(3-h) (0 for SI)."""
+    if unit_basis not in UNIT_BASES:
+        raise InputError(f"{where}: unit_basis = {unit_basis!r}; allowed: {', '.join(map(repr, UNIT_BASES))}")
+    return c * math.log(PSI) + (3.0 - h) * math.log(INCH) if unit_basis == "US" else 0.0
+
+
+def life_constant_si(K: float = K_COY, unit_basis: str = "SI", *, c: float = C_STRESS, h: float = H_DEPTH) -> float:
+    """The life constant K of Eq. 5.16 expressed in SI, Pa^c m^(3-h) (H_10 in millions of cycles).
+
+    ``unit_basis`` is the basis K is given in: ``"SI"`` (Pa, m: returned unchanged) or ``"US"``
+    (psi, inch: K psi^c in^(3-h), i.e. 10^38.60 K for c = 31/3, h = 7/3). May overflow to inf
+    for large K and c; :func:`lundberg_palmgren_life` works in logarithms instead.
+    """
+    _check_constants("life_constant_si", K=K, c=c, h=h)
+    return K * math.exp(_log_unit_factor("life_constant_si", unit_basis, c, h))
+
+
 def lundberg_palmgren_life(tau0, z0, a_transverse, track_radius, *, K: float = K_COY, c: float = C_STRESS,
-                           h: float = H_DEPTH, e: float = ELLIPTICAL_E):
+                           h: float = H_DEPTH, e: float = ELLIPTICAL_E, unit_basis: str = "SI"):
     """L10 life [stress cycles] of one contact (Saccheto Eqs. 5.16, 5.24, 5.25).
 
     .. math::
         L_{10} = 10^6 \\left(\\frac{K Z_0^{\\,h}}{\\tau_0^{\\,c}\\, 2\\pi R\\, a\\, Z_0}\\right)^{1/e}
 
-    evaluated in logarithms (no overflow of tau_0^c).
+    evaluated in logarithms (no overflow of tau_0^c). The inputs are SI whatever ``unit_basis``:
+    it only says in which units K is given (``"US"``: K in psi^c in^(3-h), the same as feeding
+    tau_0 in psi and the lengths in inches to the SI formula).
 
     Parameters
     ----------
@@ -143,7 +217,9 @@ def lundberg_palmgren_life(tau0, z0, a_transverse, track_radius, *, K: float = K
     track_radius : float or array
         Radius of the rolling track on the body [m].
     K, c, h, e : float
-        Life constant (SI assumed), stress, depth and Weibull exponents.
+        Life constant, stress, depth and Weibull exponents.
+    unit_basis : str
+        Basis of K: ``"SI"`` (Pa, m; default) or ``"US"`` (psi, inch); see the module docstring.
 
     Returns
     -------
@@ -151,9 +227,10 @@ def lundberg_palmgren_life(tau0, z0, a_transverse, track_radius, *, K: float = K
         L10 [stress cycles] (= 10^6 H_10 of Eq. 5.16).
     """
     _check_constants("lundberg_palmgren_life", K=K, c=c, h=h, e=e)
+    log_k = math.log(K) + _log_unit_factor("lundberg_palmgren_life", unit_basis, c, h)
     v = _positive("lundberg_palmgren_life", tau0=tau0, z0=z0, a_transverse=a_transverse, track_radius=track_radius)
     log_volume = math.log(2.0 * math.pi) + np.log(v["track_radius"]) + np.log(v["a_transverse"]) + np.log(v["z0"])
-    log_h10 = (math.log(K) + h * np.log(v["z0"]) - c * np.log(v["tau0"]) - log_volume) / e
+    log_h10 = (log_k + h * np.log(v["z0"]) - c * np.log(v["tau0"]) - log_volume) / e
     return float_or_array(np.exp(log_h10 + math.log(1e6)))
 
 
@@ -215,8 +292,9 @@ def _check_constants(where: str, **constants) -> None:
 class LundbergPalmgren(LifeModel):
     """Lundberg–Palmgren L10 of a traction contact, Coy et al. (1976) form (Saccheto Eqs. 5.13–5.25).
 
-    Inputs (``requires``, SI): ``tau0`` critical shear stress [Pa] (maximum orthogonal shear or
-    Mohr maximum shear, see :func:`camcontact.contact.slice_stress.slice_extremum`), ``z0`` its
+    Inputs (``requires``, SI): ``tau0`` critical shear stress [Pa] (the maximum orthogonal shear
+    of Lundberg & Palmgren, or the Mohr maximum shear of Saccheto's simulation; see the module
+    docstring and :func:`camcontact.contact.slice_stress.slice_extremum`), ``z0`` its
     depth [m], ``a_transverse`` contact semi-axis transverse to rolling [m], ``track_radius``
     radius of the rolling track on the body [m]. Optional input (``optional_requires``):
     ``stress_cycle_rate`` c_r n [1/s], stress cycles per second of the contact.
@@ -228,8 +306,7 @@ class LundbergPalmgren(LifeModel):
     Parameters
     ----------
     K : float
-        Life constant (default 1.428e95, Coy 1975, Eq. 5.17; units unstated in the source,
-        SI — Pa, m, millions of cycles — assumed), > 0.
+        Life constant (default 1.428e95, Coy 1975, Eq. 5.17), > 0, in the units of ``unit_basis``.
     c : float
         Stress exponent (default 31/3), > 0.
     h : float
@@ -237,11 +314,17 @@ class LundbergPalmgren(LifeModel):
     e : float
         Weibull slope (default 10/9, elliptical; :meth:`line_contact` gives 3/2 as printed in
         Eq. 5.15), > 0.
+    unit_basis : str
+        Units K is given in (the sources do not state them): ``"SI"`` (default; tau_0 in Pa,
+        lengths in m — the reading the plausibility of the lives supports, and camcontact's
+        reading of the thesis so far) or ``"US"`` (psi, inch: 10^34.7 times longer lives with
+        the default constants). H_10 is in millions of stress cycles in both; inputs stay SI.
     """
 
     name = "lundberg_palmgren"
     reference = ("Lundberg & Palmgren (1947); Coy, Loewenthal & Zaretsky (1976) NASA TN D-8362; "
-                 "Saccheto (2008) Eqs. 5.13-5.20, 5.24-5.25 (K = 1.428e95, SI assumed)")
+                 "Saccheto (2008) Eqs. 5.13-5.20, 5.24-5.25 (K = 1.428e95; its units are unstated: "
+                 "SI assumed on plausibility, psi/inch selectable)")
     requires = ("tau0", "z0", "a_transverse", "track_radius")
     optional_requires = ("stress_cycle_rate",)
     provides = ("L10", "stressed_volume")
@@ -251,6 +334,7 @@ class LundbergPalmgren(LifeModel):
     c: float = number_field(default=C_STRESS, validators=[in_range(0.0, None, lower_inclusive=False)])
     h: float = number_field(default=H_DEPTH, validators=[in_range(0.0, None)])
     e: float = number_field(default=ELLIPTICAL_E, validators=[in_range(0.0, None, lower_inclusive=False)])
+    unit_basis: str = attrs.field(default="SI", validator=one_of(*UNIT_BASES))
 
     @classmethod
     def line_contact(cls, **overrides: Any) -> LundbergPalmgren:
@@ -259,7 +343,8 @@ class LundbergPalmgren(LifeModel):
 
     def life(self, tau0, z0, a_transverse, track_radius):
         """L10 [stress cycles] (see :func:`lundberg_palmgren_life`) with this model's constants."""
-        return lundberg_palmgren_life(tau0, z0, a_transverse, track_radius, K=self.K, c=self.c, h=self.h, e=self.e)
+        return lundberg_palmgren_life(tau0, z0, a_transverse, track_radius, K=self.K, c=self.c, h=self.h, e=self.e,
+                                      unit_basis=self.unit_basis)
 
     def system_life(self, lives, *, axis: int = 0):
         """Weibull combination of contact lives with this model's e (see :func:`system_life`)."""

@@ -22,7 +22,7 @@ from typing import NamedTuple
 import attrs
 import numpy as np
 
-from ..contact.fastsim import DEFAULT_NX, DEFAULT_NY, fastsim
+from ..contact.fastsim import DEFAULT_NX, DEFAULT_NY, DEFAULT_PRESSURE, check_pressure, fastsim
 from ..contact.kalker import B_OVER_A_RANGE
 from ..errors import InputError
 from ..units import in_range, number_field
@@ -118,6 +118,10 @@ def _grid_count(instance, attribute, value):
         raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}; allowed: an integer >= 1")
 
 
+def _pressure_choice(instance, attribute, value):
+    check_pressure(value, f"{type(instance).__name__}.{attribute.name}")
+
+
 _OUTPUTS = ("creep_force_x", "creep_force_y", "spin_moment", "slip_fraction", "traction_ratio")
 
 
@@ -132,7 +136,10 @@ class Fastsim(TractionModel):
         \\quad \\text{(stick)}, \\qquad |T| \\le C_t\\,p
 
     strip by strip from the leading edge, clipped to Ct p in the direction of the predicted
-    traction where it exceeds it; L1..L3 from Kalker's C_ij (Saccheto Tabela 5.1 at b/a). See
+    traction where it exceeds it; L1..L3 from Kalker's C_ij (Saccheto Tabela 5.1 at b/a). The
+    pressure p of the bound is Kalker's parabolic one, p = 2N/(pi a b)(1 - x^2/a^2 - y^2/b^2), for
+    which L1..L3 are calibrated (default), or the semi-ellipsoidal Hertz pressure
+    (``Fastsim(pressure="hertz")``, the reading of Saccheto's simulation). See
     :func:`camcontact.contact.fastsim.fastsim`.
 
     Parameters
@@ -141,6 +148,8 @@ class Fastsim(TractionModel):
         Elements per strip and number of strips; default 40 x 40.
     compiled : bool
         numba kernel (default) or its plain-Python twin.
+    pressure : {"parabolic", "hertz"}
+        Pressure of the traction bound; default "parabolic" (Kalker's FASTSIM).
 
     Inputs (``requires``): ``normal_force`` N [N] (>= 0; 0 gives zeros), ``a_rolling`` semi-axis
     along rolling [m], ``b_lateral`` lateral semi-axis [m] (0.1 <= b/a <= 10), ``traction_coefficient``
@@ -152,11 +161,12 @@ class Fastsim(TractionModel):
     References
     ----------
     Kalker, J.J. (1982) A fast algorithm for the simplified theory of rolling contact, Vehicle
-    System Dynamics 11:1–13; Saccheto (2008) Eqs 5.36–5.54, Tabela 5.1.
+    System Dynamics 11:1–13 (parabolic bound); Saccheto (2008) Eqs 5.36–5.54, Tabela 5.1.
     """
 
     name = "fastsim"
-    reference = "Kalker (1982) Vehicle System Dynamics 11:1-13; Saccheto (2008) Eqs 5.36-5.54, Tabela 5.1"
+    reference = ("Kalker (1982) Vehicle System Dynamics 11:1-13 (parabolic traction bound); "
+                 "Saccheto (2008) Eqs 5.36-5.54, Tabela 5.1")
     requires = ("normal_force", "a_rolling", "b_lateral", "traction_coefficient", "shear_modulus",
                 "creepage_x", "creepage_y", "spin_creepage")
     provides = _OUTPUTS
@@ -166,11 +176,13 @@ class Fastsim(TractionModel):
     nx: int = attrs.field(default=DEFAULT_NX, validator=_grid_count)
     ny: int = attrs.field(default=DEFAULT_NY, validator=_grid_count)
     compiled: bool = attrs.field(default=True, validator=attrs.validators.instance_of(bool))
+    pressure: str = attrs.field(default=DEFAULT_PRESSURE, validator=_pressure_choice)
 
     def _point(self, N, a, b, mu, G, nu_x, nu_y, phi) -> tuple[float, ...]:
         if N == 0.0:
             return (0.0,) * len(_OUTPUTS)
-        r = fastsim(a, b, N, mu, G, nu_x, nu_y, phi, nx=self.nx, ny=self.ny, compiled=self.compiled)
+        r = fastsim(a, b, N, mu, G, nu_x, nu_y, phi, nx=self.nx, ny=self.ny, compiled=self.compiled,
+                    pressure=self.pressure)
         return r.Fx, r.Fy, r.Mz, r.slip_fraction, r.traction_ratio
 
     def evaluate(self, normal_force, a_rolling, b_lateral, traction_coefficient, shear_modulus,

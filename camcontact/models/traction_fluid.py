@@ -130,6 +130,16 @@ class _FluidTraction(TractionModel):
                              "effusivity_1 (and effusivity_2) or the state's 'effusivity' [W s^0.5/(m^2 K)]")
         return TractionThermal.from_lubricant_state(lubricant_state, first, second)
 
+    def film_rheology(self, lubricant_state, effusivity=None) -> dict[str, Any]:
+        """The film's shear law as keyword inputs of the contact-level traction integrals (eta0,
+        log_viscosity_ratio, rheology, eyring_stress, limiting_shear_stress, limiting_shear_slope and
+        thermal — a :class:`~camcontact.contact.fluid_traction.TractionThermal` or None), e.g. for
+        :class:`camcontact.contact.spin_traction.SpinTractionContact`."""
+        eta0, law = self._viscosity(lubricant_state)
+        rheology = {k: v for k, v in self._rheology().items() if k not in ("geometry", "n_nodes")}
+        return {"eta0": eta0, "log_viscosity_ratio": law, "thermal": self._thermal(lubricant_state, effusivity),
+                **rheology}
+
     def contact(self, p_h, b, h_c, u_m, lubricant_state, effusivity=None,
                 profile: PressureProfile | None = None) -> FluidTractionContact:
         """The contact prepared once for many sliding speeds (e.g. a roller's traction table): its

@@ -18,14 +18,20 @@ A :class:`~camcontact.components.LoadedBallConeCVT` becomes the steps
     ``"hamrock_dowson"``; ``"multigrid"`` is the numerical point-contact solution), pure rolling at
     the rolling speed; Lambda with the roughness;
 ``traction``
-    FASTSIM (Kalker's simplified theory) on the contact ellipse with the contact's spin: the
-    longitudinal creepage that transmits F_t, the slip share of the area, the traction regime
-    (partial slip, or gross slip when F_t exceeds what Ct and the spin leave: then the traction is
-    saturated and the contact flagged);
+    the creepage that transmits F_t at each contact with its spin, the capacity and margin, gross
+    slip (boolean), the spin moment and the creep and spin losses (:mod:`camcontact.steps.traction`).
+    Model slot ``traction``: ``"ehl_traction"`` (default) — the EHL film's shear over the Hertz
+    ellipse with the local sliding of creep and spin (Eyring bounded by the limiting shear stress,
+    the lubricant's parameters; ``thermal`` effect: the lumped contact temperature), on each
+    contact's central film; or ``"fastsim"`` — Kalker's dry creep theory with the Coulomb bound
+    Ct p (Saccheto's method; its slip share of the area; ``Fastsim(pressure="hertz")`` is the
+    thesis's reading);
+``losses``
+    the drive's contact power loss n (P_in + P_out) and efficiency 1 - loss/power;
 ``stresses``
     the thesis's 2-D slice along the rolling direction through the contact centre: Hertz pressure
-    and the FASTSIM traction of the central strip -> tau0 and its depth z0 (slot ``stress``:
-    ``"max_shear"``, the Mohr radius the thesis's simulation used, or ``"orthogonal"``);
+    and the traction model's traction of the central strip -> tau0 and its depth z0 (slot ``stress``:
+    ``"orthogonal"``, Lundberg-Palmgren's shear, the default, or ``"max_shear"``, the thesis's Mohr radius);
 ``life``
     Lundberg-Palmgren after Coy & Loewenthal (Eqs. 5.16-5.25) per track: the input and output cone
     (track R_cont, n stress cycles per revolution) and one ball's input and output track (BC, DE; one
@@ -48,6 +54,7 @@ from ..contact.slice_stress import MEASURES
 from ..errors import InputError
 from ..models.life_lundberg_palmgren import LundbergPalmgren
 from ..models.traction import Fastsim
+from ..models.traction_spin import EhlTraction
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import ball_cone_hertz
 from ..steps.film import ball_cone_films, film_parameter, films_of, resolve_film_model
@@ -56,32 +63,43 @@ from ..steps.kinematics import ball_cone_motion
 from ..steps.life import ball_cone_life
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import ball_cone_slice_stresses
-from ..steps.traction import ball_cone_traction
+from ..steps.ehl_friction import fluid_traction_model
+from ..steps.traction import ball_cone_efficiency, ball_cone_ehl_traction, ball_cone_traction
 from .ball_cone_cvt_plots import plot_ball_cone_cvt
 
 __all__ = ["SIDES", "ball_cone_cvt_inputs", "build_ball_cone_cvt"]
 
 SIDES = ("in", "out")
 SLOTS = ("hertz", "film", "traction", "stress", "life")
-SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "spin"})
-DEFAULT_EFFECTS = SUPPORTED_EFFECTS
+SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "spin", "thermal"})
+DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "spin"})
+#: the traction models the slot takes
+TRACTION_MODELS = (EhlTraction, Fastsim)
 DEFAULT_OUTPUTS = (
     "tilt", "reduction_ratio", "overrange", "output_speed", "ball_speed", "rolling_radius_in", "rolling_radius_out",
     "rolling_speed_in", "rolling_speed_out", "psi_in", "psi_out", "psi_total", "spin_in", "spin_out",
     "spin_roll_in", "spin_roll_out",
     "torque", "output_torque", "cam_axial_force", "normal_force", "tangential_force_in", "tangential_force_out",
     "traction_needed_in", "traction_needed_out", "mu_min", "traction_check",
-    "Rx", "Ry", "a_rolling", "a_transverse", "p_h", "approach", "pressure_check",
+    "Rx", "Ry", "a_rolling", "a_transverse", "p_h", "approach", "pressure_check", "stress_limit_exceeded",
     "h_c_in", "h_min_in", "h_c_out", "h_min_out", "Lambda_in", "Lambda_out",
-    "creepage_in", "creepage_out", "slip_fraction_in", "slip_fraction_out", "traction_regime_in",
-    "traction_regime_out", "tau0_in", "z0_in", "tau0_out", "z0_out",
+    "creepage_in", "creepage_out", "traction_regime_in", "traction_regime_out", "gross_slip_in", "gross_slip_out",
+    "traction_capacity_in", "traction_capacity_out", "traction_margin_in", "traction_margin_out",
+    "spin_moment_in", "spin_moment_out", "creep_loss_in", "creep_loss_out", "spin_loss_in", "spin_loss_out",
+    "power_loss_in", "power_loss_out", "power_loss", "efficiency", "tau0_in", "z0_in", "tau0_out", "z0_out",
     "cycles_cone_in", "cycles_ball_in", "cycles_ball_out", "cycles_cone_out",
     "life_cone_in", "life_ball_in", "life_ball_out", "life_cone_out", "life_system",
 )
+#: the default outputs only one traction model gives
+MODEL_OUTPUTS = {Fastsim: ("slip_fraction_in", "slip_fraction_out"),
+                 EhlTraction: ("traction_temperature_rise_in", "traction_temperature_rise_out", "traction_valid_in",
+                               "traction_valid_out")}
 HINTS = {
     "lubricant": "set BallConeCVT.lubricant (the traction fluid's viscosity data)",
     "temperature": "set LoadedBallConeCVT.temperature",
     "sigma": "set BallConeCVT.roughness (RMS of each surface)",
+    "effusivity": "give the CVT's Material its thermal data (conductivity, density, specific heat) for the "
+                  "thermal traction",
 }
 
 
@@ -97,27 +115,37 @@ def ball_cone_cvt_inputs(scene: LoadedBallConeCVT, effects: frozenset) -> dict[s
         "traction_coefficient": cvt.traction_coefficient, "ball_radius": cvt.ball_radius, "ball_count": cvt.ball_count,
         "cone_angle": si.cone_angle, "cone_contact_radius": si.cone_contact_radius, "cam_ramp_angle": si.cam_ramp_angle,
         "cam_radius": si.cam_radius, "cam_ball_count": cvt.cam_ball_count, "clamping": cvt.clamping,
+        "contact_stress_limit": si.contact_stress_limit,
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": False, "spin": "spin" in effects,
         **lubricant_inputs(cvt.lubricant, scene.si.temperature),
-    } | given(sigma=si.roughness)
+    } | given(sigma=si.roughness, effusivity=_effusivity(material))
+
+
+def _effusivity(material):
+    """The balls' and cones' thermal effusivity [W s^0.5/(m^2 K)], or None without thermal data."""
+    try:
+        return material.thermal_effusivity()
+    except InputError:
+        return None
 
 
 def slot_models(models: Mapping[str, Any]) -> dict[str, Any]:
     """The models of the slots as graph inputs, checked (InputError naming the slot and what is allowed)."""
-    chosen = {"hertz_method": models.get("hertz", "exact"), "stress_measure": models.get("stress", "max_shear")}
+    chosen = {"hertz_method": models.get("hertz", "exact"), "stress_measure": models.get("stress", "orthogonal")}
     for slot, value, allowed in (("hertz", chosen["hertz_method"], HERTZ_METHODS),
                                  ("stress", chosen["stress_measure"], MEASURES)):
         if value not in allowed:
             raise InputError(f"ball_cone_cvt scene: {slot} = {value!r}; allowed: {', '.join(allowed)}")
-    for slot, family, cls, default in (("traction", "traction_models", Fastsim, "fastsim"),
-                                       ("life", "life_models", LundbergPalmgren, "lundberg_palmgren")):
+    for slot, family, classes, default in (("traction", "traction_models", TRACTION_MODELS, "ehl_traction"),
+                                           ("life", "life_models", (LundbergPalmgren,), "lundberg_palmgren")):
         spec = models.get(slot, default)
         kind = registry.get_class(family, spec) if isinstance(spec, str) else spec
-        if isinstance(kind, type) and not issubclass(kind, cls):
-            raise InputError(f"ball_cone_cvt scene: the {family} slot needs a {cls.__name__} model, got {spec!r}")
+        names = " or ".join(cls.__name__ for cls in classes)  # "EhlTraction or Fastsim"
+        if isinstance(kind, type) and not issubclass(kind, classes):
+            raise InputError(f"ball_cone_cvt scene: the {family} slot needs a {names} model, got {spec!r}")
         model = registry.get(family, spec)
-        if not isinstance(model, cls):
-            raise InputError(f"ball_cone_cvt scene: the {family} slot needs a {cls.__name__} model, got {model!r}")
+        if not isinstance(model, classes):
+            raise InputError(f"ball_cone_cvt scene: the {family} slot needs a {names} model, got {model!r}")
         chosen[f"{slot}_model"] = model
     return chosen
 
@@ -131,6 +159,8 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
     chosen = slot_models(models)
     film_model = resolve_film_model(models.get("film", "hamrock_dowson"), geometry="point",
                                     where="ball_cone_cvt scene: ", contact="the ball-cone contact")
+    traction = chosen["traction_model"]
+    ehl = isinstance(traction, EhlTraction)
     steps = [
         Step.of(ball_cone_motion), Step.of(ball_cone_contact_forces), Step.of(ball_cone_hertz),
         lubricant_step(scene.cvt.lubricant, scene.si.temperature),
@@ -138,8 +168,14 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
         *(Step.of(film_parameter, name=f"lambda_{side}", rename={"h": f"h_min_{side}", "sigma1": "sigma",
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{side}"})
           for side in SIDES),
-        Step.of(ball_cone_traction), Step.of(ball_cone_slice_stresses), Step.of(ball_cone_life),
+        (Step.of(ball_cone_ehl_traction, **{"extra" if "thermal" in effects else "optional": ("effusivity",)})
+         if ehl else Step.of(ball_cone_traction)),
+        Step.of(ball_cone_efficiency), Step.of(ball_cone_slice_stresses), Step.of(ball_cone_life),
     ]
     inputs = {**ball_cone_cvt_inputs(scene, effects), **chosen, "film_model": film_model}
-    return SceneGraph(kind="ball_cone_cvt", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS,
-                      input_hints=HINTS, plotter=plot_ball_cone_cvt, effects=effects)
+    if ehl:
+        inputs["fluid_model"] = fluid_traction_model(scene.cvt.lubricant, effects | {"non_newtonian"},
+                                                     traction.fluid or "eyring")
+    return SceneGraph(kind="ball_cone_cvt", inputs=inputs, steps=tuple(steps),
+                      default_outputs=DEFAULT_OUTPUTS + MODEL_OUTPUTS[type(traction)], input_hints=HINTS,
+                      plotter=plot_ball_cone_cvt, effects=effects)

@@ -9,12 +9,14 @@ elliptical contact with exact elliptic integrals or the Hamrock–Brewe fits
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
 from ..contact.geometry import reduced_modulus, reduced_radius
 from ..contact.hertz_elliptical import hertz_elliptical
 from ..contact.hertz_line import hertz_line, line_approach
+from ..errors import ValidityWarning
 from ..step_graph import step
 
 __all__ = [
@@ -109,15 +111,24 @@ def roller_hertz(Q, E_reduced, contact_radii, roller_length):
     return out
 
 
-@step("hertz", provides=("Rx", "Ry", "a_rolling", "a_transverse", "p_h", "approach", "pressure_check"),
+@step("hertz", provides=("Rx", "Ry", "a_rolling", "a_transverse", "p_h", "approach", "pressure_check",
+                         "stress_limit_exceeded"),
       model=lambda hertz_method: f"hertz_elliptical ({hertz_method})")
-def ball_cone_hertz(normal_force, E_reduced, ball_radius, cone_angle, cone_contact_radius, hertz_method):
+def ball_cone_hertz(normal_force, E_reduced, ball_radius, cone_angle, cone_contact_radius, hertz_method,
+                    contact_stress_limit):
     """Elliptical Hertz contact of a ball [radius m] on the cone's track: curvature cos(alpha)/R_cont
     along rolling, straight along the generator (Saccheto 2008 §3.1); semi-axes [m], p_h [Pa],
-    approach [m] and p_h against the thesis's 1.1 GPa EHL threshold."""
+    approach [m], p_h against the thesis's 1.1 GPa EHL threshold (text) and against
+    ``contact_stress_limit`` [Pa] (``stress_limit_exceeded``, with a :class:`ValidityWarning` naming
+    the limit; ISO 76:2006 gives 4.2 GPa for ball contacts)."""
     Rx = 1.0 / (1.0 / ball_radius + math.cos(cone_angle) / cone_contact_radius)
     contact = hertz_elliptical(normal_force, Rx, ball_radius, E_reduced, method=hertz_method)
     check = (f"p_h = {contact.p_max * 1e-9:.3g} GPa " +
              ("above" if contact.p_max > EHL_PRESSURE else "below") + " the thesis's 1.1 GPa EHL threshold")
+    exceeded = bool(contact.p_max > contact_stress_limit)
+    if exceeded:
+        warnings.warn(f"ball-cone contact: p_h = {contact.p_max * 1e-9:.3g} GPa exceeds the contact stress limit "
+                      f"{contact_stress_limit * 1e-9:.3g} GPa (BallConeCVT.contact_stress_limit; default: ISO 76:2006, "
+                      "static rating of ball bearings, 4.2 GPa)", ValidityWarning, stacklevel=2)
     return {"Rx": Rx, "Ry": ball_radius, "a_rolling": contact.a_x, "a_transverse": contact.a_y, "p_h": contact.p_max,
-            "approach": contact.approach, "pressure_check": check}
+            "approach": contact.approach, "pressure_check": check, "stress_limit_exceeded": exceeded}

@@ -124,7 +124,9 @@ def raceway_checks(tau_max, tresca_max, tau_xz_range, yield_strength, convention
 
 def slice_through_centre(a_rolling: float, p_h: float, result, measure: str):
     """tau0 and z0 of the 2-D slice through a contact's centre along rolling (Saccheto 2008 §3.4):
-    Hertz pressure on the centre line and the traction ratio Tx/p of FASTSIM's central strip."""
+    Hertz pressure on the centre line and the traction ratio Tx/p of the traction model's central strip
+    (``result``: a FASTSIM result, or the EHL model's
+    :class:`~camcontact.contact.spin_traction.CentreLineTraction`)."""
     a, p0 = a_rolling, p_h
     j = int(np.argmin(np.abs(result.y)))
     x_strip = result.x[j][::-1]  # FASTSIM marches from the leading edge (+a) to the trailing edge
@@ -141,11 +143,11 @@ def slice_through_centre(a_rolling: float, p_h: float, result, measure: str):
 
 @step("stresses", provides=("tau0_in", "z0_in", "tau0_out", "z0_out"),
       model=lambda stress_measure: f"slice_2d ({stress_measure})")
-def ball_cone_slice_stresses(a_rolling, p_h, fastsim_in, fastsim_out, stress_measure):
+def ball_cone_slice_stresses(a_rolling, p_h, surface_traction_in, surface_traction_out, stress_measure):
     """tau0 [Pa] and its depth z0 [m] at the CVT's input and output contact (:func:`slice_through_centre`;
     ``stress_measure`` "max_shear", the Mohr radius the thesis's simulation used, or "orthogonal")."""
     out = {}
-    for side, result in (("in", fastsim_in), ("out", fastsim_out)):
+    for side, result in (("in", surface_traction_in), ("out", surface_traction_out)):
         extremum = slice_through_centre(a_rolling, p_h, result, stress_measure)
         out[f"tau0_{side}"], out[f"z0_{side}"] = extremum.tau0, extremum.z0
     return out

@@ -1,7 +1,16 @@
-"""Traction steps: the creepage and slip of the ball-cone CVT's contacts under the tangential force they
-must transmit, with spin (Kalker's FASTSIM, :mod:`camcontact.contact.fastsim`; Saccheto 2008 §3.3).
+"""Traction steps: the creepage of the ball-cone CVT's contacts under the tangential force they must
+transmit, with spin; their capacity, margin, gross slip, spin moment and losses; the drive's efficiency.
 
-Forces [N], semi-axes [m], shear modulus [Pa], spin [1/m]; creepages [-].
+Two models in one slot: Kalker's FASTSIM with a Coulomb bound Ct p (:mod:`camcontact.contact.fastsim`;
+Saccheto 2008 §3.3, the thesis's method; capacity Ct N, reached at unbounded creep) and the EHL film's
+traction with spin (:mod:`camcontact.contact.spin_traction`, model ``ehl_traction``; capacity the
+largest force at |creepage| <= its ``max_creepage``). Losses per contact: the creep loss -V (nu_x F_x +
+nu_y F_y) and the spin loss -V phi M_z (in steady rolling the work of the creep forces and the spin
+moment on the rigid creepages is the dissipation, for both models; Loewenthal & Zaretsky 1985, NASA
+RP-1154 §6.6). Efficiency 1 - n (P_in + P_out)/P: the contact losses only (no bearing, churning or
+windage losses).
+
+Forces [N], semi-axes [m], shear modulus [Pa], spin [1/m], speeds [m/s], powers [W]; creepages [-].
 """
 
 from __future__ import annotations
@@ -9,7 +18,26 @@ from __future__ import annotations
 from ..contact.fastsim import GrossSlipError, fastsim, solve_creepage
 from ..step_graph import step
 
-__all__ = ["ball_cone_traction", "transmitted_traction"]
+__all__ = ["CONTACT_TRACTION", "EHL_TRACTION", "FASTSIM_TRACTION", "ball_cone_ehl_traction", "ball_cone_efficiency",
+           "ball_cone_traction", "transmitted_traction"]
+
+SIDES = ("in", "out")
+#: per-contact outputs both traction models give (with the suffix _in / _out)
+CONTACT_TRACTION = ("creepage", "traction_regime", "gross_slip", "traction_capacity", "traction_margin",
+                    "spin_moment", "creep_loss", "spin_loss", "power_loss", "surface_traction")
+#: the FASTSIM step's and the EHL step's outputs
+FASTSIM_TRACTION = tuple(f"{q}_{side}" for q in CONTACT_TRACTION + ("slip_fraction",) for side in SIDES)
+EHL_TRACTION = tuple(f"{q}_{side}" for q in CONTACT_TRACTION + ("traction_temperature_rise", "traction_valid")
+                     for side in SIDES)
+
+
+def contact_losses(Fx: float, Fy: float, Mz: float, creepage_x: float, creepage_y: float, spin: float,
+                   rolling_speed: float) -> dict[str, float]:
+    """Creep loss -V (nu_x F_x + nu_y F_y), spin loss -V phi M_z and their sum [W] (forces on the body whose
+    creepages are given, Kalker's signs)."""
+    creep = -rolling_speed * (creepage_x * Fx + creepage_y * Fy)
+    spin_loss = -rolling_speed * spin * Mz
+    return {"creep_loss": creep, "spin_loss": spin_loss, "power_loss": creep + spin_loss}
 
 
 def transmitted_traction(model, tangential_force: float, a_rolling: float, a_transverse: float, normal_force: float,
@@ -17,7 +45,7 @@ def transmitted_traction(model, tangential_force: float, a_rolling: float, a_tra
     """FASTSIM creepage that transmits ``tangential_force`` at one contact, or the saturated (gross-slip)
     traction when the contact cannot: creepage, slip fraction, regime text and the FASTSIM result."""
     a, b, N, mu, G = a_rolling, a_transverse, normal_force, traction_coefficient, shear_modulus
-    grid = {"nx": model.nx, "ny": model.ny, "compiled": model.compiled}
+    grid = {"nx": model.nx, "ny": model.ny, "compiled": model.compiled, "pressure": model.pressure}
     try:
         solution = solve_creepage(tangential_force, a, b, N, mu, G, spin=spin, **grid)
         result, creepage, regime = solution.result, solution.creepage, "partial slip"
@@ -30,16 +58,61 @@ def transmitted_traction(model, tangential_force: float, a_rolling: float, a_tra
             "fastsim": result}
 
 
-@step("traction", provides=("creepage_in", "creepage_out", "slip_fraction_in", "slip_fraction_out",
-                            "traction_regime_in", "traction_regime_out", "fastsim_in", "fastsim_out"),
-      model=lambda traction_model: traction_model.name)
+def _fastsim_contact(model, force, a, b, N, mu, G, phi, speed) -> dict:
+    solution = transmitted_traction(model, force, a, b, N, mu, G, phi)
+    result = solution["fastsim"]
+    capacity = mu * N
+    gross = solution["traction_regime"] != "partial slip"
+    return {"creepage": solution["creepage"], "slip_fraction": solution["slip_fraction"],
+            "traction_regime": "gross slip" if gross else "partial slip", "gross_slip": gross,
+            "traction_capacity": capacity, "traction_margin": 1.0 - abs(force) / capacity,
+            "spin_moment": result.Mz, "surface_traction": result,
+            **contact_losses(result.Fx, result.Fy, result.Mz, solution["creepage"], 0.0, phi, speed)}
+
+
+@step("traction", provides=FASTSIM_TRACTION, model=lambda traction_model: f"fastsim ({traction_model.pressure})")
 def ball_cone_traction(traction_model, a_rolling, a_transverse, normal_force, traction_coefficient, shear_modulus,
-                       tangential_force_in, tangential_force_out, spin_in, spin_out, spin):
-    """:func:`transmitted_traction` at the CVT's input and output contact; the spin creepage enters
-    only with the ``spin`` effect."""
+                       tangential_force_in, tangential_force_out, spin_in, spin_out, spin, rolling_speed_in,
+                       rolling_speed_out):
+    """FASTSIM (:func:`transmitted_traction`) at the CVT's input and output contact: creepage, slip
+    fraction, regime ("partial slip" / "gross slip") and ``gross_slip``, capacity Ct N and margin
+    1 - F_t/(Ct N), spin moment, creep and spin losses, and the FASTSIM result (``surface_traction``);
+    the spin creepage enters only with the ``spin`` effect."""
     out = {}
-    for side, force, phi in (("in", tangential_force_in, spin_in), ("out", tangential_force_out, spin_out)):
-        solution = transmitted_traction(traction_model, force, a_rolling, a_transverse, normal_force,
-                                        traction_coefficient, shear_modulus, phi if spin else 0.0)
+    for side, force, phi, speed in (("in", tangential_force_in, spin_in, rolling_speed_in),
+                                    ("out", tangential_force_out, spin_out, rolling_speed_out)):
+        solution = _fastsim_contact(traction_model, force, a_rolling, a_transverse, normal_force, traction_coefficient,
+                                    shear_modulus, phi if spin else 0.0, speed)
         out.update({f"{key}_{side}": value for key, value in solution.items()})
     return out
+
+
+@step("traction", provides=EHL_TRACTION,
+      model=lambda traction_model, fluid_model: f"ehl_traction ({fluid_model.name}"
+                                                f"{', thermal' if fluid_model.thermal else ''})")
+def ball_cone_ehl_traction(traction_model, fluid_model, a_rolling, a_transverse, p_h, h_c_in, h_c_out,
+                           tangential_force_in, tangential_force_out, spin_in, spin_out, spin, rolling_speed_in,
+                           rolling_speed_out, lubricant_state, **inputs):
+    """The EHL film's traction with spin (:class:`~camcontact.models.traction_spin.EhlTraction`) at the CVT's
+    input and output contact, on each contact's central film: creepage, regime ("viscous", "plateau",
+    "gross slip") and ``gross_slip``, capacity and margin, spin moment, creep and spin losses, the lumped
+    temperature rise (thermal fluid), ``traction_valid`` and the centre-line traction for the slice
+    stresses (``surface_traction``). ``inputs``: ``effusivity`` of the surfaces for a thermal fluid."""
+    effusivity = inputs.get("effusivity")
+    out = {}
+    for side, force, phi, speed, h in (("in", tangential_force_in, spin_in, rolling_speed_in, h_c_in),
+                                       ("out", tangential_force_out, spin_out, rolling_speed_out, h_c_out)):
+        contact = traction_model.contact(a_rolling, a_transverse, p_h, h, speed, lubricant_state, effusivity,
+                                         fluid=fluid_model)
+        solution = traction_model.solve(force, phi if spin else 0.0, contact)
+        solution["surface_traction"] = contact.centre_line(solution.pop("state"))
+        out.update({f"{key}_{side}": value for key, value in solution.items()})
+    return out
+
+
+@step("losses", provides=("power_loss", "efficiency"))
+def ball_cone_efficiency(power, ball_count, power_loss_in, power_loss_out):
+    """The drive's contact losses n (P_in + P_out) [W] and efficiency 1 - losses/power [-] (no bearing,
+    churning or windage losses)."""
+    loss = ball_count * (power_loss_in + power_loss_out)
+    return {"power_loss": loss, "efficiency": 1.0 - loss / power}

@@ -85,9 +85,12 @@ def test_mu_min_with_the_documented_cam_radius():
     R_cont = 24 mm gives 0.088163 — R_cont is not printed, and 24.009 mm would give 0.08813 exactly
     (reference §3.1 note). Both readings kept visible."""
     eta = math.radians(10)
-    assert minimum_traction(ALPHA, eta, 6e-3, 24e-3) == pytest.approx(0.08813, rel=5e-4)
-    assert minimum_traction(ALPHA, eta, 6e-3, 24.009e-3) == pytest.approx(0.08813, abs=5e-6)
-    assert minimum_traction(ALPHA, eta, 12e-3, 24e-3) == pytest.approx(2 * 0.088163, rel=1e-4)
+    thesis = dict(clamping="thesis")
+    assert minimum_traction(ALPHA, eta, 6e-3, 24e-3, **thesis) == pytest.approx(0.08813, rel=5e-4)
+    assert minimum_traction(ALPHA, eta, 6e-3, 24.009e-3, **thesis) == pytest.approx(0.08813, abs=5e-6)
+    assert minimum_traction(ALPHA, eta, 12e-3, 24e-3, **thesis) == pytest.approx(2 * 0.088163, rel=1e-4)
+    # the default (axial balance) needs sin^2(alpha) = 1/4 of that: four times the normal force
+    assert minimum_traction(ALPHA, eta, 6e-3, 24e-3) == pytest.approx(0.088163 * 0.25, rel=1e-4)
 
 
 def test_loads_at_150_w():
@@ -95,7 +98,8 @@ def test_loads_at_150_w():
     thesis's "about 1200 N at 150 W" (reference §3.1 note); F_t/F_n = mu_min; Eq. 6.18 F_an = 2 F_n cos(alpha);
     the output contact carries F_t x rt (ball torque balance BC F_t,in = DE F_t,out)."""
     loads = ball_cone_loads(150.0, 2 * math.pi, ball_count=9, cone_radius=24e-3, cone_angle=ALPHA,
-                            cam_angle=math.radians(10), cam_radius=6e-3, cam_ball_count=5, reduction_ratio=2.0)
+                            cam_angle=math.radians(10), cam_radius=6e-3, cam_ball_count=5, reduction_ratio=2.0,
+                            clamping="thesis")
     assert loads["torque"] == pytest.approx(150 / (2 * math.pi))
     assert loads["tangential_force_in"] == pytest.approx(23.8732 / (0.024 * 9), rel=1e-5)
     assert loads["normal_force"] == pytest.approx(1253.63, abs=0.01) and abs(loads["normal_force"] - 1200) < 60
@@ -113,6 +117,8 @@ def test_loads_grow_linearly_with_power_and_not_with_ratio():
     common = dict(ball_count=9, cone_radius=24e-3, cone_angle=ALPHA, cam_angle=math.radians(10), cam_radius=6e-3,
                   cam_ball_count=5)
     f50 = ball_cone_loads(50.0, 2 * math.pi, reduction_ratio=0.5, **common)
+    assert f50["normal_force"] == pytest.approx(
+        ball_cone_loads(50.0, 2 * math.pi, reduction_ratio=2.0, **common)["normal_force"])
     f200 = ball_cone_loads(200.0, 2 * math.pi, reduction_ratio=2.0, **common)
     assert f200["normal_force"] == pytest.approx(4 * f50["normal_force"])
     assert f200["cam_axial_force"] == pytest.approx(4 * f50["cam_axial_force"])

@@ -138,7 +138,9 @@ def test_spin_moment_in_stick():
 
 # ----------------------------------------------------------------- large creepage: Coulomb saturation
 def _continuum_fx(nu):
-    """Continuum FASTSIM Fx for pure longitudinal creepage (independent semi-analytic calculation).
+    """Continuum FASTSIM Fx for pure longitudinal creepage with the Hertz bound (``pressure="hertz"``;
+    independent semi-analytic calculation; the parabolic bound's closed form is checked in
+    tests/unit/test_fastsim_pressure.py).
 
     On the strip at y (half-length a_y, pressure P_y sqrt(1 - x^2/a_y^2), P_y = 3N/(2 pi a b)
     sqrt(1 - y^2/b^2)) the stick traction k s (k = nu/L1, s = a_y - x the distance from the
@@ -161,14 +163,15 @@ def _continuum_fx(nu):
 
 @pytest.mark.parametrize("multiple", [0.5, 1.0, 2.0, 3.0])
 def test_creep_force_curve_converges_to_the_continuum_solution(multiple):
-    """(b) Partial slip: the discrete Fx converges to the semi-analytic continuum value. Measured
+    """(b) Partial slip with the Hertz bound (``pressure="hertz"``; the default is Kalker's parabolic
+    bound since issue 17): the discrete Fx converges to the semi-analytic continuum value. Measured
     relative differences at 40^2 / 160^2: 0.16 %/0.017 % (0.5 nu_ref), 0.048 %/0.004 % (1),
     0.003 %/0.004 % (2), 0.04 %/0.005 % (3); allowed 0.5 % at the default grid, 0.05 % at 160^2."""
     nu = multiple * NU_REF
     reference = _continuum_fx(nu)
     assert max(-MU * N, -C11 * G * A * B * nu) < reference < 0.0  # below both the Coulomb and the linear force
-    assert fastsim(A, B, N, MU, G, nu).Fx == pytest.approx(reference, rel=5e-3)
-    assert fastsim(A, B, N, MU, G, nu, nx=160, ny=160).Fx == pytest.approx(reference, rel=5e-4)
+    assert fastsim(A, B, N, MU, G, nu, pressure="hertz").Fx == pytest.approx(reference, rel=5e-3)
+    assert fastsim(A, B, N, MU, G, nu, nx=160, ny=160, pressure="hertz").Fx == pytest.approx(reference, rel=5e-4)
 
 
 def test_large_creepage_saturates_at_mu_n():

@@ -30,21 +30,30 @@ def point(**changes):
     return cc.LoadedBallConeCVT(**fields)
 
 
+#: the thesis's dry creep theory (the scene's default traction model is the EHL film's, ehl_traction)
+FASTSIM = {"traction": "fastsim"}
+
+
 def test_only_the_needed_steps_run():
     assert cc.Analysis(point(), outputs=["psi_total"]).steps() == ["kinematics"]
     assert cc.Analysis(point(), outputs=["p_h"]).steps() == ["kinematics", "loads", "hertz"]
-    assert "film" not in cc.Analysis(point(), outputs=["life_system"]).steps()
+    assert "film" not in cc.Analysis(point(), outputs=["life_system"], models=FASTSIM).steps()
+    # the EHL traction (default) shears the film: the life needs it through the traction's surface stresses
+    assert cc.Analysis(point(), outputs=["life_system"]).steps() == [
+        "kinematics", "loads", "hertz", "lubricant", "film", "traction", "stresses", "life"]
+    assert cc.Analysis(point(), outputs=["efficiency"]).steps()[-1] == "losses"
 
 
 def test_chain_is_consistent():
     """The FASTSIM creepage found transmits F_t (1e-9); the system life is the Weibull combination of
     the two cones and 9 balls x 2 tracks (Eq. 5.20); ball tracks turn once per ball revolution, cone
     tracks see 9 balls per revolution; the Hertz pressure is 3 N/(2 pi a b)."""
-    result = cc.Analysis(point(ratio=1.5)).run()
+    result = cc.Analysis(point(ratio=1.5), models=FASTSIM).run()
     row = result.rows[0]
     shear = 207e9 / 2.6
     check = fastsim(row["a_rolling"], row["a_transverse"], row["normal_force"], 0.1, shear,
                     creepage_x=row["creepage_in"], spin=row["spin_in"])
+    assert row["efficiency"] == pytest.approx(1 - 9 * (row["power_loss_in"] + row["power_loss_out"]) / 150.0)
     assert check.Fx == pytest.approx(row["tangential_force_in"], rel=1e-9)
     lives = [row["life_cone_in"], row["life_cone_out"]] + [row["life_ball_in"], row["life_ball_out"]] * 9
     assert row["life_system"] == pytest.approx(system_life(np.array(lives), 10 / 9), rel=1e-12)
@@ -54,17 +63,17 @@ def test_chain_is_consistent():
 
 
 def test_symmetric_at_one_to_one():
-    row = cc.Analysis(point()).run().rows[0]
+    row = cc.Analysis(point(), models=FASTSIM).run().rows[0]
     for stem in ("psi", "h_min", "tau0", "z0", "slip_fraction"):
         assert row[f"{stem}_in"] == pytest.approx(row[f"{stem}_out"], rel=1e-9)
     assert row["life_cone_in"] == pytest.approx(row["life_cone_out"], rel=1e-9)
 
 
 def test_gross_slip_is_flagged_and_finite():
-    """Ratio 2 (reduction): the output contact needs 2 mu_min = 0.176 > Ct = 0.1 -> gross slip flagged,
-    traction saturated, everything finite."""
-    row = cc.Analysis(point(ratio=2.0)).run().rows[0]
-    assert row["traction_check"].startswith("gross slip: the output contact needs F_t/F_n = 0.1763")
+    """Ratio 2 (reduction): the output contact needs 2 mu_min = 0.0441 (axial-balance clamping) > Ct = 0.04 ->
+    gross slip flagged, traction saturated, everything finite."""
+    row = cc.Analysis(point(ratio=2.0, cvt=cvt(traction_coefficient=0.04)), models=FASTSIM).run().rows[0]
+    assert row["traction_check"].startswith("gross slip: the output contact needs F_t/F_n = 0.04408")
     assert row["traction_regime_out"].startswith("gross slip") and row["traction_regime_in"] == "partial slip"
     assert row["slip_fraction_out"] == 1.0
     assert all(np.isfinite(row[k]) for k in ("tau0_out", "z0_out", "life_system", "creepage_out"))
@@ -72,8 +81,9 @@ def test_gross_slip_is_flagged_and_finite():
 
 def test_spin_effect_can_be_switched_off():
     """Without spin the same force needs less slip (spin takes part of the adhesion)."""
-    spinning = cc.Analysis(point(power="50 W"), outputs=["slip_fraction_in"]).run()
-    plain = cc.Analysis(point(power="50 W"), outputs=["slip_fraction_in"], effects=["elasticity", "piezoviscosity"]).run()
+    spinning = cc.Analysis(point(power="50 W"), outputs=["slip_fraction_in"], models=FASTSIM).run()
+    plain = cc.Analysis(point(power="50 W"), outputs=["slip_fraction_in"], effects=["elasticity", "piezoviscosity"],
+                        models=FASTSIM).run()
     assert plain["slip_fraction_in"] < spinning["slip_fraction_in"]
 
 
@@ -89,7 +99,9 @@ def test_model_slots_and_bad_input():
     with pytest.raises(InputError, match="needs a LundbergPalmgren model"):
         cc.Analysis(point(), models={"life": "iso281"})
     with pytest.raises(InputError, match="do not apply to a ball_cone_cvt scene"):
-        cc.Analysis(point(), effects=["thermal"])
+        cc.Analysis(point(), effects=["mixed"])
+    with pytest.raises(InputError, match="needs a EhlTraction or Fastsim model"):
+        cc.Analysis(point(), models={"traction": "eyring"})
     with pytest.raises(InputError, match="sigma: set BallConeCVT.roughness"):
         cc.Analysis(point(cvt=cvt(roughness=None)), outputs=["Lambda_in"])
     with pytest.raises(InputError, match="LoadedBallConeCVT.power"):
@@ -112,9 +124,14 @@ def test_plot(tmp_path):
     import matplotlib
 
     matplotlib.use("Agg")
-    figure = cc.Analysis(point(power="50 W")).run().plot()
-    assert len(figure.axes) == 3
+    figure = cc.Analysis(point(power="50 W"), models=FASTSIM).run().plot()
+    assert len(figure.axes) == 4
     figure.savefig(tmp_path / "cvt.png")
+    # the EHL traction (default) and FASTSIM side by side: losses and lives of both variants
+    both = cc.Analysis(point(), models={"traction": ["ehl_traction", "fastsim"]}).run()
+    figure = both.plot(panels=("losses", "life"))
+    assert len(figure.axes) == 2 and "efficiency" in figure.axes[0].get_legend().get_texts()[0].get_text()
+    figure.savefig(tmp_path / "cvt_models.png")
 
 
 def test_lives_in_cycles_and_hours_agree():

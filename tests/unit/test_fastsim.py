@@ -37,11 +37,14 @@ CASES = {
 # ----------------------------------------------------------------- twin vs compiled
 @pytest.mark.parametrize("case", sorted(CASES))
 @pytest.mark.parametrize("grid", [(7, 5), (24, 31)])
-def test_compiled_kernel_equals_its_python_twin(case, grid):
-    """(d) The numba kernel and the plain-Python twin agree to 1e-12 (same operations)."""
+@pytest.mark.parametrize("pressure", ["parabolic", "hertz"])
+def test_compiled_kernel_equals_its_python_twin(case, grid, pressure):
+    """(d) The numba kernel and the plain-Python twin agree to 1e-12 (same operations), with either
+    pressure of the traction bound."""
     nx, ny = grid
-    python = fastsim(A, B, N, MU, G, *CASES[case], nx=nx, ny=ny, compiled=False)
-    numba = fastsim(A, B, N, MU, G, *CASES[case], nx=nx, ny=ny, compiled=True)
+    python = fastsim(A, B, N, MU, G, *CASES[case], nx=nx, ny=ny, compiled=False, pressure=pressure)
+    numba = fastsim(A, B, N, MU, G, *CASES[case], nx=nx, ny=ny, compiled=True, pressure=pressure)
+    assert numba.pressure == python.pressure == pressure
     for name in ("Fx", "Fy", "Mz", "slip_fraction"):
         assert getattr(numba, name) == pytest.approx(getattr(python, name), rel=1e-12, abs=1e-12 * MU * N)
     for name in ("Tx", "Ty", "p", "x"):
@@ -99,9 +102,11 @@ def test_force_is_odd_in_the_creepages():
     assert (minus.Fx, minus.Fy, minus.Mz) == pytest.approx((-plus.Fx, -plus.Fy, -plus.Mz), rel=1e-12)
 
 
-def test_pressure_carries_the_load_and_grid_shapes():
-    """The sampled Hertz pressure is normalised to carry N exactly; grid shapes are (ny, nx)."""
-    result = fastsim(A, B, N, MU, G, 0.2 * NU_REF, nx=11, ny=7)
+@pytest.mark.parametrize("pressure", ["parabolic", "hertz"])
+def test_pressure_carries_the_load_and_grid_shapes(pressure):
+    """The sampled pressure (Kalker's parabolic or Hertz) is normalised to carry N exactly; grid
+    shapes are (ny, nx)."""
+    result = fastsim(A, B, N, MU, G, 0.2 * NU_REF, nx=11, ny=7, pressure=pressure)
     assert result.Tx.shape == result.p.shape == result.stick.shape == result.x.shape == (7, 11)
     assert result.y.shape == result.dx.shape == (7,)
     area = result.dx[:, None] * result.dy
@@ -206,6 +211,7 @@ def test_fastsim_model_broadcasts_and_handles_no_load():
                          creepage_x=1e-3 * NU_REF, creepage_y=0.0, spin_creepage=0.0)
     direct = fastsim(A, B, N, MU, G, 1e-3 * NU_REF, nx=20, ny=20)
     assert out["creep_force_x"][0] == direct.Fx and out["creep_force_x"][1] == 0.0
+    assert model.pressure == "parabolic" and direct.pressure == "parabolic"  # Kalker's FASTSIM by default
     assert set(out) == set(Fastsim.provides)
     assert all(np.all(np.isfinite(v)) for v in out.values())
     scalar = model({"normal_force": N, "a_rolling": A, "b_lateral": B, "traction_coefficient": MU,

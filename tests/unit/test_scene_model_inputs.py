@@ -147,7 +147,7 @@ def test_point_film_model_with_only_a_central_film():
 
 
 def test_model_slots_that_cannot_serve_the_scene_are_input_errors():
-    with pytest.raises(InputError, match="traction_models slot needs a Fastsim model, got 'constant'"):
+    with pytest.raises(InputError, match="traction_models slot needs a EhlTraction or Fastsim model, got 'constant'"):
         cc.Analysis(forti_point(), outputs=["creepage_in"], models={"traction": "constant"})
     bearing = load_bearing()
     with pytest.raises(InputError, match="life model 'lundberg_palmgren' is not an ISO 281 modified rating life"):

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy import special
 
-from camcontact.errors import InputError
+from camcontact.errors import InputError, ValidityWarning
 from camcontact.steps.contact import (
     ball_cone_hertz,
     cycle_hertz,
@@ -168,7 +168,7 @@ def test_ball_cone_hertz_hamrock_brewe_closed_form():
     delta = K [9/(2 E R) (F/(pi kappa E'))^2]^(1/3)."""
     F, r, alpha, Rc = 1254.0, 7e-3, math.radians(30), 24e-3
     E = 207e9 / (1 - 0.09)
-    out = ball_cone_hertz(F, E, r, alpha, Rc, "hamrock_brewe")
+    out = ball_cone_hertz(F, E, r, alpha, Rc, "hamrock_brewe", 4.2e9)
     assert_provides(ball_cone_hertz, out)
     Rx = 1 / (1 / r + math.cos(alpha) / Rc)
     ratio, R = r / Rx, 1 / (1 / Rx + 1 / r)
@@ -191,11 +191,15 @@ def test_ball_cone_hertz_exact_ellipticity_and_threshold():
     below the 1.1 GPa EHL threshold."""
     F, r, alpha, Rc = 1254.0, 7e-3, math.radians(30), 24e-3
     E = 207e9 / (1 - 0.09)
-    out = ball_cone_hertz(F, E, r, alpha, Rc, "exact")
+    out = ball_cone_hertz(F, E, r, alpha, Rc, "exact", 4.2e9)
     kappa = out["a_transverse"] / out["a_rolling"]
     m = 1 - kappa**-2
     K, Ee = special.ellipk(m), special.ellipe(m)
     assert (kappa**2 * Ee - K) / (K - Ee) == pytest.approx(out["Ry"] / out["Rx"], rel=1e-8)
     assert out["p_h"] == pytest.approx(1.5 * F / (math.pi * out["a_rolling"] * out["a_transverse"]), rel=1e-12)
-    light = ball_cone_hertz(5.0, E, r, alpha, Rc, "exact")
+    light = ball_cone_hertz(5.0, E, r, alpha, Rc, "exact", 4.2e9)
     assert "below the thesis's 1.1 GPa EHL threshold" in light["pressure_check"]
+    # the stress limit (ISO 76 4.2 GPa by default in the component): 4.3 GPa at 1254 N exceeds it, with a warning
+    assert not light["stress_limit_exceeded"] and out["stress_limit_exceeded"]
+    with pytest.warns(ValidityWarning, match="exceeds the contact stress limit 4.2 GPa"):
+        ball_cone_hertz(F, E, r, alpha, Rc, "exact", 4.2e9)

@@ -22,7 +22,7 @@ MODEL = registry.get("traction_models", "fastsim")
 
 
 def traction(F_in, F_out, spin=False, phi_in=100.0, phi_out=50.0):
-    return ball_cone_traction(MODEL, A, B, N, CT, G, F_in, F_out, phi_in, phi_out, spin)
+    return ball_cone_traction(MODEL, A, B, N, CT, G, F_in, F_out, phi_in, phi_out, spin, 1.0, 2.0)
 
 
 def test_creepage_transmits_the_tangential_force_without_spin():
@@ -31,7 +31,7 @@ def test_creepage_transmits_the_tangential_force_without_spin():
     out = traction(50.0, 100.0)
     assert set(out) == set(ball_cone_traction.step.provides)
     for side, force in (("in", 50.0), ("out", 100.0)):
-        assert out[f"fastsim_{side}"].spin == 0.0
+        assert out[f"surface_traction_{side}"].spin == 0.0
         check = fastsim(A, B, N, CT, G, creepage_x=out[f"creepage_{side}"], spin=0.0)
         assert check.Fx == pytest.approx(force, rel=1e-9)
         assert out[f"traction_regime_{side}"] == "partial slip"
@@ -52,7 +52,7 @@ def test_small_forces_are_in_the_linear_regime():
 def test_spin_enters_with_the_spin_effect():
     """With the effect, each side's spin creepage is used and the creepage found still transmits F_t."""
     out = traction(50.0, 100.0, spin=True)
-    assert out["fastsim_in"].spin == 100.0 and out["fastsim_out"].spin == 50.0
+    assert out["surface_traction_in"].spin == 100.0 and out["surface_traction_out"].spin == 50.0
     check = fastsim(A, B, N, CT, G, creepage_x=out["creepage_in"], spin=100.0)
     assert check.Fx == pytest.approx(50.0, rel=1e-9)
     assert out["creepage_in"] != pytest.approx(traction(50.0, 100.0)["creepage_in"], rel=1e-3)
@@ -60,12 +60,64 @@ def test_spin_enters_with_the_spin_effect():
 
 def test_gross_slip_saturates_at_ct_n():
     """F_t,out = 200 N > Ct N = 125.4 N: the output contact cannot transmit it: creepage -1e3 Ct N/(G a b),
-    the whole area slips, |F_x| = Ct N (rel 1e-4), the regime names F_t/F_n = 0.1595 >= Ct = 0.1."""
+    the whole area slips, |F_x| = Ct N (rel 1e-4), regime "gross slip" and the boolean, capacity Ct N and the
+    margin 1 - 200/125.4 < 0; the losses are the creep force's work on the creepage (no spin here)."""
     out = traction(50.0, 200.0)
     assert out["creepage_out"] == pytest.approx(-1e3 * CT * N / (G * A * B), rel=1e-12)
     assert out["slip_fraction_out"] == 1.0
-    assert abs(out["fastsim_out"].Fx) == pytest.approx(CT * N, rel=1e-4)
-    assert out["traction_regime_out"] == "gross slip: F_t/F_n = 0.1595 >= Ct = 0.1"
+    assert abs(out["surface_traction_out"].Fx) == pytest.approx(CT * N, rel=1e-4)
+    assert out["traction_regime_out"] == "gross slip" and out["gross_slip_out"] and not out["gross_slip_in"]
     assert out["traction_regime_in"] == "partial slip"
-    assert np.all(np.isfinite(out["fastsim_out"].Tx))
+    assert out["traction_capacity_out"] == pytest.approx(CT * N) and out["traction_margin_out"] == pytest.approx(
+        1 - 200 / (CT * N))
+    field = out["surface_traction_out"]
+    assert out["power_loss_out"] == pytest.approx(-2.0 * out["creepage_out"] * field.Fx, rel=1e-12)
+    assert out["spin_loss_out"] == 0.0 and out["power_loss_out"] > 0
+    assert np.all(np.isfinite(out["surface_traction_out"].Tx))
     assert math.isfinite(out["creepage_in"])
+
+
+# ------------------------------------------------------------------ EHL traction with spin, losses
+class _State:
+    """A lubricant state: eta0 [Pa s] and a Barus law ln(eta/eta0) = 2e-8 p."""
+
+    eta0 = 0.02
+    name = "test fluid"
+
+    @staticmethod
+    def log_viscosity_ratio(p):
+        return 2e-8 * np.asarray(p)
+
+
+def test_ehl_traction_step_transmits_the_forces_with_spin():
+    """The EHL step solves each contact's creepage on its own film and spin: the contact model at the creepage
+    found transmits F_t (1e-9); the outputs per side, the centre-line traction for the stresses, the losses'
+    split; without the spin effect the spin loss is zero."""
+    from camcontact.models.traction_fluid import EyringTraction
+    from camcontact.models.traction_spin import EhlTraction
+    from camcontact.steps.traction import ball_cone_ehl_traction
+
+    model, fluid = EhlTraction(), EyringTraction()
+    p_h = 1.5 * N / (math.pi * A * B)
+    args = dict(traction_model=model, fluid_model=fluid, a_rolling=A, a_transverse=B, p_h=p_h, h_c_in=5e-8,
+                h_c_out=6e-8, tangential_force_in=20.0, tangential_force_out=40.0, spin_in=100.0, spin_out=50.0,
+                rolling_speed_in=1.0, rolling_speed_out=2.0, lubricant_state=_State())
+    out = ball_cone_ehl_traction(spin=True, **args)
+    assert set(out) == set(ball_cone_ehl_traction.step.provides)
+    for side, force, h, phi, speed in (("in", 20.0, 5e-8, 100.0, 1.0), ("out", 40.0, 6e-8, 50.0, 2.0)):
+        contact = model.contact(A, B, p_h, h, speed, _State(), fluid=fluid)
+        state = contact.evaluate(out[f"creepage_{side}"], 0.0, phi)
+        assert state.Fx == pytest.approx(force, rel=1e-9)
+        assert out[f"power_loss_{side}"] == pytest.approx(out[f"creep_loss_{side}"] + out[f"spin_loss_{side}"])
+        assert out[f"spin_loss_{side}"] > 0 and not out[f"gross_slip_{side}"]
+        assert out[f"surface_traction_{side}"].Tx.shape == (1, 41)
+    still = ball_cone_ehl_traction(spin=False, **args)
+    assert still["spin_loss_in"] == 0.0 and abs(still["creepage_in"]) < abs(out["creepage_in"])
+
+
+def test_efficiency_step():
+    """n (P_in + P_out) lost of the power: 9 x (1 + 2) W of 150 W -> 0.82."""
+    from camcontact.steps.traction import ball_cone_efficiency
+
+    out = ball_cone_efficiency(150.0, 9, 1.0, 2.0)
+    assert out == {"power_loss": 27.0, "efficiency": pytest.approx(1 - 27 / 150)}

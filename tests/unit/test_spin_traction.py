@@ -1,0 +1,192 @@
+"""EHL traction with creep and spin over the Hertz ellipse (camcontact.contact.spin_traction, issue 17).
+
+Independent checks: the Newtonian closed forms at low creep (F_x = -(V nu_x/h) int eta dA, M_z = -(V phi/h)
+int eta (x^2 + y^2) dA; for a constant viscosity pi a b and pi a b (a^2 + b^2)/4 times eta0), the Barus
+integral by scipy's dblquad, the full-slip (rigid-plastic) limit tau = Lambda_L p along the slip: the pivoting
+moment of a circular Hertz contact (3 pi/16) Lambda_L P a (Lubkin's twisting contact; Johnson, Contact
+Mechanics §7.4 with mu -> Lambda_L) and the longitudinal force with spin by dblquad.
+"""
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+from camcontact.contact.fluid_traction import TractionThermal
+from camcontact.contact.spin_traction import SpinTractionContact
+from camcontact.errors import InputError
+from camcontact.models.traction_spin import EhlTraction
+
+A, B, PH, H, V, ETA0 = 5.5e-4, 6.4e-4, 1.5e9, 5e-8, 2.0, 0.02
+
+
+def isoviscous(p):
+    return np.zeros_like(p)
+
+
+def contact(**changes):
+    fields = dict(a=A, b=B, p_h=PH, film_thickness=H, rolling_speed=V, eta0=ETA0, log_viscosity_ratio=isoviscous,
+                  rheology="newtonian")
+    fields.update(changes)
+    return SpinTractionContact(**fields)
+
+
+def test_newtonian_closed_forms_creep_and_spin():
+    """Constant viscosity: F_x = -eta0 V nu_x pi a b/h, F_y likewise with nu_y, M_z = -eta0 V phi pi a b (a^2+b^2)/(4h);
+    the film is linear, so creep and spin superpose (1e-9)."""
+    c = contact()
+    nu_x, nu_y, phi = 1e-4, -3e-5, 0.4
+    state = c.evaluate(nu_x, nu_y, phi)
+    area = math.pi * A * B
+    assert state.Fx == pytest.approx(-ETA0 * V * nu_x * area / H, rel=1e-9)
+    assert state.Fy == pytest.approx(-ETA0 * V * nu_y * area / H, rel=1e-9)
+    assert state.Mz == pytest.approx(-ETA0 * V * phi * area * (A**2 + B**2) / (4 * H), rel=1e-9)
+    assert c.normal_force == pytest.approx(2 / 3 * math.pi * A * B * PH, rel=1e-12)
+    # losses: the dissipation splits exactly into creep and spin losses
+    assert state.power_loss == pytest.approx(state.creep_loss + state.spin_loss, rel=1e-9)
+    assert state.spin_loss == pytest.approx(-V * phi * state.Mz, rel=1e-12) and state.power_loss > 0
+
+
+def test_barus_low_creep_against_dblquad():
+    """Barus eta0 exp(alpha p), alpha = 1e-8/Pa at p_h = 1.5 GPa (eta up to e^15): F_x/nu_x and M_z/phi against
+    the double integrals of eta and eta (x^2 + y^2) over the ellipse by dblquad (1e-6)."""
+    alpha = 1e-8
+    c = contact(log_viscosity_ratio=lambda p: alpha * p, n_radial=48, n_angular=64)
+
+    def eta(y, x):
+        return ETA0 * math.exp(alpha * PH * math.sqrt(max(0.0, 1 - (x / A) ** 2 - (y / B) ** 2)))
+
+    def edge(x):
+        return B * math.sqrt(max(0.0, 1 - (x / A) ** 2))
+
+    opts = dict(epsabs=0, epsrel=1e-10)
+    mass = integrate.dblquad(eta, -A, A, lambda x: -edge(x), edge, **opts)[0]
+    inertia = integrate.dblquad(lambda y, x: eta(y, x) * (x * x + y * y), -A, A, lambda x: -edge(x), edge, **opts)[0]
+    nu, phi = 1e-9, 1e-6  # stresses far below any limit: linear
+    assert c.evaluate(nu).Fx == pytest.approx(-V * nu * mass / H, rel=1e-6)
+    assert c.evaluate(0.0, 0.0, phi).Mz == pytest.approx(-V * phi * inertia / H, rel=1e-6)
+
+
+def test_eyring_tends_to_newtonian_at_low_creep():
+    """eta gamma << tau0: asinh(s) = s, so the Eyring film carries the Newtonian force (1e-6 at s ~ 1e-3)."""
+    newton = contact().evaluate(1e-6, 0.0, 1e-3)
+    eyring = contact(rheology="eyring", eyring_stress=5e6).evaluate(1e-6, 0.0, 1e-3)
+    assert ETA0 * V * 1e-6 / H / 5e6 < 2e-3
+    assert eyring.Fx == pytest.approx(newton.Fx, rel=1e-6) and eyring.Mz == pytest.approx(newton.Mz, rel=1e-6)
+
+
+def plastic(**changes):
+    """A film at its limiting shear stress Lambda_L p everywhere (huge viscosity): rigid-plastic, mu = Lambda_L."""
+    return contact(eta0=1e6, limiting_shear_slope=0.08, **changes)
+
+
+def test_full_slip_pivoting_moment_of_a_circular_contact():
+    """Pure spin in full slip: M = (3 pi/16) Lambda_L P a (p = p0 sqrt(1 - r^2/a^2), P = 2 pi p0 a^2/3)."""
+    c = plastic(b=A, n_radial=32)
+    state = c.evaluate(0.0, 0.0, 50.0)
+    assert state.limited_fraction == 1.0
+    assert -state.Mz == pytest.approx(3 * math.pi / 16 * 0.08 * c.normal_force * A, rel=1e-9)
+    assert state.Fx == pytest.approx(0.0, abs=1e-9 * c.normal_force)
+
+
+def full_slip_force(nu, phi):
+    """F_x/(Lambda_L N) of the rigid-plastic film with creep nu and spin phi: -int p (nu - phi y)/|w| dA / N."""
+    def integrand(y, x):
+        p = PH * math.sqrt(max(0.0, 1 - (x / A) ** 2 - (y / B) ** 2))
+        wx, wy = nu - phi * y, phi * x
+        return -p * wx / math.hypot(wx, wy)
+
+    def edge(x):
+        return B * math.sqrt(max(0.0, 1 - (x / A) ** 2))
+
+    pole = nu / phi  # the integrand turns at (0, pole): split there for dblquad's accuracy
+    total = 0.0
+    for lower, upper in ((lambda x: -edge(x), lambda x: min(max(pole, -edge(x)), edge(x))),
+                         (lambda x: min(max(pole, -edge(x)), edge(x)), edge)):
+        total += integrate.dblquad(integrand, -A, A, lower, upper, epsabs=0, epsrel=1e-9)[0]
+    return total / (2 / 3 * math.pi * A * B * PH)
+
+
+@pytest.mark.parametrize("nu, phi", [(0.02, 100.0), (0.05, 100.0), (0.01, 30.0)])
+def test_full_slip_force_with_spin_against_dblquad(nu, phi):
+    """The longitudinal force of a rigid-plastic contact loses capacity to spin: against dblquad (pole inside the
+    contact for nu/phi < b: first rows). The kink at the pole limits the 16 x 64 rule to ~0.7 %."""
+    c = plastic()
+    expected = full_slip_force(nu, phi)
+    assert c.evaluate(nu, 0.0, phi).Fx / (0.08 * c.normal_force) == pytest.approx(expected, rel=1e-2)
+    fine = plastic(n_radial=64, n_angular=256).evaluate(nu, 0.0, phi)
+    assert fine.Fx / (0.08 * c.normal_force) == pytest.approx(expected, rel=1e-3)
+
+
+def test_capacity_falls_with_spin():
+    """The must-show's trend: the capacity at |nu_x| <= 5 % falls as the spin grows (plateau film; the values
+    follow the rigid-plastic integral: 1.0, 0.99, 0.80, 0.31 of Lambda_L N for phi = 0, 30, 100, 300 /m at
+    b = 0.64 mm, where nu/phi = 1.7 mm, 0.5 mm, 0.17 mm sets the slip pole; 1 % for the pole's kink)."""
+    c = plastic()
+    capacities = [-c.capacity(spin=phi).Fx / (0.08 * c.normal_force) for phi in (0.0, 30.0, 100.0, 300.0)]
+    assert np.all(np.diff(capacities) < 0)
+    assert capacities[0] == pytest.approx(1.0, rel=1e-9)
+    for phi, value in zip((30.0, 100.0, 300.0), capacities[1:]):
+        assert value == pytest.approx(-full_slip_force(0.05, phi), rel=1e-2)
+
+
+def test_solve_creepage_transmits_the_force_and_flags_gross_slip():
+    c = contact(rheology="eyring", eyring_stress=5e6, limiting_shear_slope=0.075, log_viscosity_ratio=lambda p: 2e-8 * p)
+    state, peak = c.solve_creepage(50.0, spin=60.0)
+    assert state.Fx == pytest.approx(50.0, rel=1e-9) and state.creepage_x < 0
+    assert -peak.Fx > 50.0
+    over, peak = c.solve_creepage(-2.0 * (-peak.Fx), spin=60.0)
+    assert over.Fx == pytest.approx(peak.Fx, rel=1e-12) and over.creepage_x > 0  # saturated, force's sign
+
+
+def test_thermal_capacity_peaks_below_the_bound():
+    """With the lumped temperature (beta 0.03/K, k 0.1 W/(m K), steel effusivity, V = 10 m/s, p_h 0.8 GPa) the
+    Eyring film's traction curve peaks near 25 % creep and falls beyond (the viscosity falls by exp(-beta dT)
+    faster than asinh grows): the capacity lies inside the bound, the heated force is below the isothermal one."""
+    thermal = TractionThermal(0.1, 0.03, 11_600.0, 11_600.0)
+    args = dict(rheology="eyring", eyring_stress=5e6, limiting_shear_slope=0.075, log_viscosity_ratio=lambda p: 2e-8 * p,
+                rolling_speed=10.0, p_h=0.8e9)
+    hot = contact(thermal=thermal, **args)
+    peak = hot.capacity(spin=20.0, max_creepage=0.5)
+    assert peak.converged and 0.1 < peak.creepage_x < 0.4 and peak.temperature_rise > 10.0
+    assert -hot.evaluate(0.5, 0.0, 20.0).Fx < -peak.Fx
+    assert -hot.evaluate(0.5 * peak.creepage_x, 0.0, 20.0).Fx < -peak.Fx
+    cold = contact(**args).evaluate(peak.creepage_x, 0.0, 20.0)
+    assert -cold.Fx > -peak.Fx
+
+
+@pytest.mark.parametrize("field, value, match", [
+    ("a", 0.0, "a = 0.0"), ("p_h", -1.0, "p_h = -1.0"), ("film_thickness", float("nan"), "film_thickness"),
+    ("rheology", "bingham", "rheology = 'bingham'"), ("n_radial", 2, "n_radial = 2"),
+    ("log_viscosity_ratio", 3.0, "log_viscosity_ratio"),
+])
+def test_bad_input_is_named(field, value, match):
+    with pytest.raises(InputError, match=match):
+        contact(**{field: value})
+    with pytest.raises(InputError, match="creepage_x"):
+        contact().evaluate(float("inf"))
+    with pytest.raises(InputError, match="max_creepage"):
+        contact().capacity(max_creepage=0.0)
+
+
+def test_model_checks_the_load_and_fields():
+    class State:
+        eta0 = ETA0
+
+        @staticmethod
+        def log_viscosity_ratio(p):
+            return 2e-8 * p
+
+    model = EhlTraction()
+    N = 2 / 3 * math.pi * A * B * PH
+    out = model.evaluate(N, A, B, PH, H, V, 60.0, 50.0, State())
+    assert out["creepage"] < 0 and not out["gross_slip"] and 0 < out["traction_margin"] < 1
+    assert out["power_loss"] == pytest.approx(out["creep_loss"] + out["spin_loss"], rel=1e-9)
+    with pytest.raises(InputError, match="carries"):
+        model.evaluate(2 * N, A, B, PH, H, V, 60.0, 50.0, State())
+    assert model.evaluate(N, A, B, PH, H, V, 60.0, 500.0, State())["gross_slip"]
+    with pytest.raises(InputError, match="max_creepage"):
+        EhlTraction(max_creepage=0.0)
+    with pytest.raises(InputError, match="fluid"):
+        EhlTraction(fluid="eyring")
