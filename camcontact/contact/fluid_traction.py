@@ -139,6 +139,7 @@ __all__ = [
     "PressureProfile",
     "TractionThermal",
     "asinh_exp",
+    "film_shear_stress",
     "fluid_traction",
     "traction_coefficient",
     "traction_curve",
@@ -369,6 +370,22 @@ def asinh_exp(L: np.ndarray) -> np.ndarray:
     return np.where(L > _ASINH_SWITCH, L + _LN2, out)
 
 
+def film_shear_stress(L: np.ndarray, rheology: str, tau0, tau_limit) -> tuple[np.ndarray, np.ndarray | None]:
+    """The film's shear stress tau >= 0 [Pa] from L = ln(eta gamma) (newtonian: tau = e^L) or
+    L = ln(eta gamma/tau0) (eyring: tau = tau0 asinh(e^L)), bounded by ``tau_limit`` (None: no bound),
+    and the mask where the bound holds (None without one)."""
+    if rheology == "eyring":
+        tau = tau0 * asinh_exp(L)
+    else:
+        with np.errstate(over="ignore"):
+            tau = np.exp(L)
+    limited = None
+    if tau_limit is not None:
+        limited = tau >= tau_limit
+        tau = np.minimum(tau, tau_limit)
+    return tau, limited
+
+
 class FluidTractionContact:
     """A contact prepared once for many sliding speeds (the roller solver's inner loop).
 
@@ -476,15 +493,7 @@ class FluidTractionContact:
         """tau (>= 0) at the nodes, the limited mask and ln(eta gamma/tau0) (eyring) for the given
         ln|gamma h| = ln|u_s| (trailing axis of the nodes added here) and beta dT."""
         L = log_base + (log_rate - dT_beta)[..., None]
-        if self.rheology == "eyring":
-            tau = tau0 * asinh_exp(L)
-        else:
-            with np.errstate(over="ignore"):
-                tau = np.exp(L)
-        limited = None
-        if tau_limit is not None:
-            limited = tau >= tau_limit
-            tau = np.minimum(tau, tau_limit)
+        tau, limited = film_shear_stress(L, self.rheology, tau0, tau_limit)
         return tau, limited, L
 
     def _log_rate(self, sliding_speed):

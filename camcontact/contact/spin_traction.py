@@ -72,9 +72,9 @@ from scipy.optimize import brentq, minimize_scalar
 
 from ..errors import InputError
 from .contact_temperature import band_flash_per_flux
-from .fluid_traction import BAND_MEAN_OVER_MAX, POINT_FLASH_FACTOR, RHEOLOGIES, TractionThermal, asinh_exp
+from .fluid_traction import BAND_MEAN_OVER_MAX, POINT_FLASH_FACTOR, RHEOLOGIES, TractionThermal, film_shear_stress
 
-__all__ = ["DEFAULT_MAX_CREEPAGE", "CentreLineTraction", "SpinTraction", "SpinTractionContact"]
+__all__ = ["DEFAULT_MAX_CREEPAGE", "CentreLineTraction", "SpinTraction", "SpinTractionContact", "rolling_losses"]
 
 #: largest |nu_x| over which the capacity is sought (5 %: traction drives run at 0.1-3 % creep)
 DEFAULT_MAX_CREEPAGE = 0.05
@@ -129,25 +129,27 @@ def _grid(n_radial: int, n_angular: int):
     return arrays
 
 
-def _positive(name: str, value, *, allow_zero: bool = False) -> float:
+def _number(name: str, value, *, low: float | None = None, low_inclusive: bool = True) -> float:
+    """One finite number (>= or > ``low`` when given), or an InputError naming ``name``, the value as given and
+    what is allowed."""
+    allowed = "a finite number" if low is None else f"finite, {'>=' if low_inclusive else '>'} {low:g}"
     try:
         number = float(value)
     except (TypeError, ValueError):
-        raise InputError(f"spin traction: {name} = {value!r}; allowed: a number") from None
-    ok = math.isfinite(number) and (number >= 0.0 if allow_zero else number > 0.0)
-    if not ok:
-        raise InputError(f"spin traction: {name} = {value!r}; allowed: finite, {'>=' if allow_zero else '>'} 0")
+        raise InputError(f"spin traction: {name} = {value!r}; allowed: {allowed}") from None
+    if not (math.isfinite(number) and (low is None or (number >= low if low_inclusive else number > low))):
+        raise InputError(f"spin traction: {name} = {value!r}; allowed: {allowed}")
     return number
 
 
-def _finite(name: str, value) -> float:
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise InputError(f"spin traction: {name} = {value!r}; allowed: a finite number") from None
-    if not math.isfinite(number):
-        raise InputError(f"spin traction: {name} = {value!r}; allowed: a finite number")
-    return number
+def rolling_losses(Fx: float, Fy: float, Mz: float, creepage_x: float, creepage_y: float, spin: float,
+                   rolling_speed: float) -> dict[str, float]:
+    """Creep loss -V (nu_x F_x + nu_y F_y), spin loss -V phi M_z and their sum [W] of a contact rolling at V
+    with those creepages under the forces and moment on the body (Kalker's signs): in steady rolling the
+    dissipation, for a film (this module) as for FASTSIM."""
+    creep = -rolling_speed * (creepage_x * Fx + creepage_y * Fy)
+    spin_loss = -rolling_speed * spin * Mz
+    return {"creep_loss": creep, "spin_loss": spin_loss, "power_loss": creep + spin_loss}
 
 
 class SpinTractionContact:
@@ -192,11 +194,11 @@ class SpinTractionContact:
                              "of the gauge pressure [Pa] giving ln(eta/eta0)")
         if thermal is not None and not isinstance(thermal, TractionThermal):
             raise InputError(f"spin traction: thermal = {thermal!r}; allowed: None or a TractionThermal")
-        self.a, self.b = _positive("a", a), _positive("b", b)
-        self.p_h = _positive("p_h", p_h)
-        self.h = _positive("film_thickness", film_thickness)
-        self.V = _positive("rolling_speed", rolling_speed)
-        eta0 = _positive("eta0", eta0)
+        self.a, self.b = _number("a", a, low=0.0, low_inclusive=False), _number("b", b, low=0.0, low_inclusive=False)
+        self.p_h = _number("p_h", p_h, low=0.0, low_inclusive=False)
+        self.h = _number("film_thickness", film_thickness, low=0.0, low_inclusive=False)
+        self.V = _number("rolling_speed", rolling_speed, low=0.0, low_inclusive=False)
+        eta0 = _number("eta0", eta0, low=0.0, low_inclusive=False)
         self.rheology, self.thermal = rheology, thermal
         X, Y, ratio, weight = _grid(int(n_radial), int(n_angular))
         self.x, self.y = self.a * X, self.b * Y
@@ -205,11 +207,12 @@ class SpinTractionContact:
         pressure = self.p_h * ratio
         self.normal_force = float(np.sum(pressure * self.dA))
         self.law, self.eta0 = log_viscosity_ratio, eta0
-        self.tau0 = _positive("eyring_stress", eyring_stress) if rheology == "eyring" else None
+        self.tau0 = (_number("eyring_stress", eyring_stress, low=0.0, low_inclusive=False) if rheology == "eyring"
+                     else None)
         self.limit = None
         if limiting_shear_slope is not None:
-            self.limit = (_positive("limiting_shear_stress", limiting_shear_stress, allow_zero=True),
-                          _positive("limiting_shear_slope", limiting_shear_slope, allow_zero=True))
+            self.limit = (_number("limiting_shear_stress", limiting_shear_stress, low=0.0),
+                          _number("limiting_shear_slope", limiting_shear_slope, low=0.0))
         self.log_base, self.tau_limit = self._node_values(pressure)
         self.per_flux = 0.0
         if thermal is not None:
@@ -239,16 +242,8 @@ class SpinTractionContact:
         speed = np.hypot(wx, wy)
         with np.errstate(divide="ignore"):
             L = log_base + np.log(speed) - dT_beta
-        if self.rheology == "eyring":
-            tau = self.tau0 * asinh_exp(L)
-        else:
-            with np.errstate(over="ignore"):
-                tau = np.exp(L)
-        limited = np.zeros(tau.shape, dtype=bool)
-        if tau_limit is not None:
-            limited = tau >= tau_limit
-            tau = np.minimum(tau, tau_limit)
-        return wx, wy, speed, tau, limited
+        tau, limited = film_shear_stress(L, self.rheology, self.tau0, tau_limit)
+        return wx, wy, speed, tau, np.zeros(tau.shape, dtype=bool) if limited is None else limited
 
     def _flux(self, nu_x, nu_y, phi, dT_beta) -> float:
         _, _, speed, tau, _ = self._field(nu_x, nu_y, phi, dT_beta)
@@ -278,7 +273,7 @@ class SpinTractionContact:
 
     def evaluate(self, creepage_x=0.0, creepage_y=0.0, spin=0.0) -> SpinTraction:
         """:class:`SpinTraction` at nu_x, nu_y [-] and the spin creepage phi [1/m]."""
-        nu_x, nu_y, phi = _finite("creepage_x", creepage_x), _finite("creepage_y", creepage_y), _finite("spin", spin)
+        nu_x, nu_y, phi = _number("creepage_x", creepage_x), _number("creepage_y", creepage_y), _number("spin", spin)
         dT, converged = self._temperature(nu_x, nu_y, phi)
         beta = 0.0 if self.thermal is None else self.thermal.thermoviscous_coefficient
         wx, wy, speed, tau, limited = self._field(nu_x, nu_y, phi, beta * dT)
@@ -288,10 +283,10 @@ class SpinTractionContact:
         Fx, Fy = -float(np.sum(tx)), -float(np.sum(ty))
         Mz = -float(np.sum(self.x * ty - self.y * tx))
         power = float(np.sum(tau * speed * self.dA))
-        creep = -self.V * (nu_x * Fx + nu_y * Fy)
-        spin_loss = -self.V * phi * Mz
+        losses = rolling_losses(Fx, Fy, Mz, nu_x, nu_y, phi, self.V)
         limited_fraction = float(np.sum(self.dA[limited])) / float(np.sum(self.dA))
-        return SpinTraction(Fx, Fy, Mz, power, creep, spin_loss, limited_fraction, dT, converged, nu_x, nu_y, phi)
+        return SpinTraction(Fx, Fy, Mz, power, losses["creep_loss"], losses["spin_loss"], limited_fraction, dT,
+                            converged, nu_x, nu_y, phi)
 
     def centre_line(self, state: SpinTraction, n: int = 41) -> CentreLineTraction:
         """Pressure and traction T_x on y = 0 for a ``state`` of this contact (its creepages and
@@ -311,8 +306,8 @@ class SpinTractionContact:
         """The state of largest |F_x| over 0 < nu_x <= ``max_creepage`` (F_x(-nu_x) = -F_x(nu_x): the
         contact is symmetric in y): the bound when isothermal, the traction curve's peak when thermal
         (a log grid, then a bounded search in log nu_x). Its ``-Fx`` is the capacity [N]."""
-        top = _positive("max_creepage", max_creepage)
-        phi, nu_y = _finite("spin", spin), _finite("creepage_y", creepage_y)
+        top = _number("max_creepage", max_creepage, low=0.0, low_inclusive=False)
+        phi, nu_y = _number("spin", spin), _number("creepage_y", creepage_y)
         edge = self.evaluate(top, nu_y, phi)
         if self.thermal is None:
             return edge
@@ -332,23 +327,17 @@ class SpinTractionContact:
         needs a negative creepage), on the stable branch below the capacity: (state, capacity state).
         Where |force_x| exceeds the capacity the contact slips grossly: the returned state is the
         capacity's (F_x saturated, sign of ``force_x``) — check ``abs(state.Fx) < abs(force_x)``."""
-        target = _finite("force_x", force_x)
+        target = _number("force_x", force_x)
         peak = self.capacity(spin, creepage_y, max_creepage)
-        sign = -1.0 if target > 0.0 else 1.0  # the creepage's sign
-        if target == 0.0 and spin == 0.0 and creepage_y == 0.0:
+        if target == 0.0:  # F_x(0) = 0 for any spin and lateral creep (the contact is symmetric in y)
             return self.evaluate(0.0, creepage_y, spin), peak
-        limit = -peak.Fx  # >= 0: force of the positive creepage at the peak, mirrored
-        if abs(target) >= limit:
-            return self.evaluate(sign * peak.creepage_x, creepage_y, spin), peak
-        # Fx(nu) at phi: F(-nu) = -F(nu) only without spin asymmetry; solve on the sign's branch directly
+        sign = -1.0 if target > 0.0 else 1.0  # the creepage's sign
         top = peak.creepage_x
+        if abs(target) >= -peak.Fx:  # beyond the capacity (-peak.Fx >= 0, the positive creepage's mirrored)
+            return self.evaluate(sign * top, creepage_y, spin), peak
 
         def residual(nu):
             return self.evaluate(sign * nu, creepage_y, spin).Fx - target
 
-        if residual(0.0) == 0.0:
-            return self.evaluate(0.0, creepage_y, spin), peak
-        if residual(0.0) * residual(top) > 0.0:
-            return self.evaluate(sign * top, creepage_y, spin), peak
         nu = brentq(residual, 0.0, top, xtol=1e-15, rtol=1e-12, maxiter=200)
         return self.evaluate(sign * nu, creepage_y, spin), peak

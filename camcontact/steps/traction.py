@@ -16,6 +16,7 @@ Forces [N], semi-axes [m], shear modulus [Pa], spin [1/m], speeds [m/s], powers 
 from __future__ import annotations
 
 from ..contact.fastsim import GrossSlipError, fastsim, solve_creepage
+from ..contact.spin_traction import rolling_losses
 from ..step_graph import step
 
 __all__ = ["CONTACT_TRACTION", "EHL_TRACTION", "FASTSIM_TRACTION", "ball_cone_ehl_traction", "ball_cone_efficiency",
@@ -31,43 +32,28 @@ EHL_TRACTION = tuple(f"{q}_{side}" for q in CONTACT_TRACTION + ("traction_temper
                      for side in SIDES)
 
 
-def contact_losses(Fx: float, Fy: float, Mz: float, creepage_x: float, creepage_y: float, spin: float,
-                   rolling_speed: float) -> dict[str, float]:
-    """Creep loss -V (nu_x F_x + nu_y F_y), spin loss -V phi M_z and their sum [W] (forces on the body whose
-    creepages are given, Kalker's signs)."""
-    creep = -rolling_speed * (creepage_x * Fx + creepage_y * Fy)
-    spin_loss = -rolling_speed * spin * Mz
-    return {"creep_loss": creep, "spin_loss": spin_loss, "power_loss": creep + spin_loss}
-
-
 def transmitted_traction(model, tangential_force: float, a_rolling: float, a_transverse: float, normal_force: float,
-                         traction_coefficient: float, shear_modulus: float, spin: float) -> dict:
-    """FASTSIM creepage that transmits ``tangential_force`` at one contact, or the saturated (gross-slip)
-    traction when the contact cannot: creepage, slip fraction, regime text and the FASTSIM result."""
+                         traction_coefficient: float, shear_modulus: float, spin: float, rolling_speed: float) -> dict:
+    """FASTSIM at one contact: the creepage that transmits ``tangential_force``, or the saturated traction
+    where the contact cannot (gross slip: creepage far past the limit, Ct p everywhere); slip fraction,
+    regime ("partial slip" / "gross slip") and ``gross_slip``, capacity Ct N and margin 1 - F_t/(Ct N),
+    spin moment, losses (:func:`~camcontact.contact.spin_traction.rolling_losses`) and the FASTSIM result
+    (``surface_traction``)."""
     a, b, N, mu, G = a_rolling, a_transverse, normal_force, traction_coefficient, shear_modulus
     grid = {"nx": model.nx, "ny": model.ny, "compiled": model.compiled, "pressure": model.pressure}
     try:
         solution = solve_creepage(tangential_force, a, b, N, mu, G, spin=spin, **grid)
-        result, creepage, regime = solution.result, solution.creepage, "partial slip"
-    except GrossSlipError as exc:
-        # the contact cannot transmit F_t: traction saturated at Ct p everywhere (creepage far past the limit)
+        result, creepage, gross = solution.result, solution.creepage, False
+    except GrossSlipError:
         creepage = -1e3 * mu * N / (G * a * b)
         result = fastsim(a, b, N, mu, G, creepage_x=creepage, spin=spin, **grid)
-        regime = f"gross slip: F_t/F_n = {exc.traction_needed:.4g} >= Ct = {mu:.4g}"
-    return {"creepage": creepage, "slip_fraction": result.slip_fraction, "traction_regime": regime,
-            "fastsim": result}
-
-
-def _fastsim_contact(model, force, a, b, N, mu, G, phi, speed) -> dict:
-    solution = transmitted_traction(model, force, a, b, N, mu, G, phi)
-    result = solution["fastsim"]
+        gross = True
     capacity = mu * N
-    gross = solution["traction_regime"] != "partial slip"
-    return {"creepage": solution["creepage"], "slip_fraction": solution["slip_fraction"],
+    return {"creepage": creepage, "slip_fraction": result.slip_fraction,
             "traction_regime": "gross slip" if gross else "partial slip", "gross_slip": gross,
-            "traction_capacity": capacity, "traction_margin": 1.0 - abs(force) / capacity,
+            "traction_capacity": capacity, "traction_margin": 1.0 - abs(tangential_force) / capacity,
             "spin_moment": result.Mz, "surface_traction": result,
-            **contact_losses(result.Fx, result.Fy, result.Mz, solution["creepage"], 0.0, phi, speed)}
+            **rolling_losses(result.Fx, result.Fy, result.Mz, creepage, 0.0, spin, rolling_speed)}
 
 
 @step("traction", provides=FASTSIM_TRACTION, model=lambda traction_model: f"fastsim ({traction_model.pressure})")
@@ -81,8 +67,8 @@ def ball_cone_traction(traction_model, a_rolling, a_transverse, normal_force, tr
     out = {}
     for side, force, phi, speed in (("in", tangential_force_in, spin_in, rolling_speed_in),
                                     ("out", tangential_force_out, spin_out, rolling_speed_out)):
-        solution = _fastsim_contact(traction_model, force, a_rolling, a_transverse, normal_force, traction_coefficient,
-                                    shear_modulus, phi if spin else 0.0, speed)
+        solution = transmitted_traction(traction_model, force, a_rolling, a_transverse, normal_force,
+                                        traction_coefficient, shear_modulus, phi if spin else 0.0, speed)
         out.update({f"{key}_{side}": value for key, value in solution.items()})
     return out
 
