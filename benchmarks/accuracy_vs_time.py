@@ -25,6 +25,15 @@ power, the energy per turn, the peak coefficient and the cost per angle, into ``
     python benchmarks/accuracy_vs_time.py --friction          # 1-degree steps, multigrid level 7
     python benchmarks/accuracy_vs_time.py --friction --quick  # 4-degree steps, level 5 (the tests run this)
 
+``--traction`` climbs the traction ladder of the ball-cone CVT at one operating point (3000 rpm, 150 W, ratio
+1.5) — the thesis's constant-Ct check, FASTSIM with the Hertz (thesis) and the parabolic (Kalker) pressure, the
+EHL film's Eyring traction with spin isothermal and thermal on the Hertz pressure, and both on the numerical
+point-contact pressure — reporting creepage, capacity, margin, losses, efficiency and the cost per operating
+point, into ``accuracy_vs_time_traction.csv``.
+
+    python benchmarks/accuracy_vs_time.py --traction          # numerical pressure on 257^2 (level 5)
+    python benchmarks/accuracy_vs_time.py --traction --quick  # 65^2 (level 3), one run each (the tests run this)
+
 ``--point`` does the same for circular point contacts: the numerical solution on 65^2 .. 513^2
 (levels 3-6; incompressible, Roelands) against the finest level, and the Nijenbanning–Venner–Moes
 and Hamrock–Dowson formulas against it, with the wall time of each, into ``accuracy_vs_time_point.csv``.
@@ -335,6 +344,73 @@ def friction_rows(step_deg: float, level: int, repeats: int) -> pd.DataFrame:
     return frame
 
 
+#: the traction ladder of the ball-cone CVT: (rung, traction model, film, effects beyond the defaults)
+TRACTION_LADDER = (
+    ("constant Ct (thesis check)", None, "hamrock_dowson", set()),
+    ("FASTSIM, Hertz pressure (thesis)", "fastsim_hertz", "hamrock_dowson", set()),
+    ("FASTSIM, Kalker's parabolic pressure", "fastsim", "hamrock_dowson", set()),
+    ("EHL Eyring isothermal, Hertz pressure", "ehl_traction", "hamrock_dowson", set()),
+    ("EHL Eyring thermal, Hertz pressure", "ehl_traction", "hamrock_dowson", {"thermal"}),
+    ("EHL Eyring isothermal, numerical pressure", "ehl_traction", "multigrid", set()),
+    ("EHL Eyring thermal, numerical pressure", "ehl_traction", "multigrid", {"thermal"}),
+)
+TRACTION_OUTPUTS = ("normal_force", "traction_needed_in", "traction_needed_out", "creepage_in", "creepage_out",
+                    "traction_capacity_in", "traction_margin_in", "traction_margin_out", "spin_loss_in",
+                    "creep_loss_in", "power_loss", "efficiency")
+
+
+def traction_rows(level: int, repeats: int) -> pd.DataFrame:
+    """The traction ladder of the ball-cone CVT at one operating point — Forti's geometry (tests' traction fluid,
+    30/5.5 cSt, alpha 25 1/GPa, Ct 0.1; steel with thermal data; the fluid with k = 0.11
+    W/(m K)) at 3000 rpm, 150 W, ratio 1.5, axial-balance clamping (p_h 1.9 GPa; Moes M ~ 300, where the
+    numerical film converges): the input contact's creepage, capacity and margin, the spin loss, the drive's
+    efficiency and the cost per operating point of each rung (the whole scene run, median of ``repeats`` after
+    an untimed run that compiles the kernels).
+    The constant-Ct rung is the thesis's check: capacity Ct N, margin 1 - (F_t/F_n)/Ct, no creep or losses."""
+    import camcontact as cc
+    from camcontact.models.film_multigrid_point import MultigridPoint
+    from camcontact.models.traction import Fastsim
+
+    steel = cc.Material(E="207 GPa", nu=0.3, density="7850 kg/m^3", specific_heat="460 J/kg/K",
+                        thermal_conductivity="47 W/m/K")
+    fluid = cc.Lubricant(name="traction fluid", nu40="30 cSt", nu100="5.5 cSt", density="0.90 g/cm^3",
+                         alpha="2.5e-8 1/Pa", thermal_conductivity="0.11 W/m/K")
+    cvt = cc.BallConeCVT(cone_angle="30 deg", cone_contact_radius="24 mm", ball_diameter="14 mm", ball_count=9,
+                         tilt_max="30 deg", cam_ramp_angle="10 deg", cam_radius="6 mm", cam_ball_count=5,
+                         material=steel, traction_coefficient=0.1, lubricant=fluid, roughness="0.1 um")
+    scene = cc.LoadedBallConeCVT(cvt=cvt, power="150 W", input_speed="3000 rpm", ratio=1.5, temperature="60 degC")
+    base = {"elasticity", "piezoviscosity", "spin"}
+    rows = []
+    for label, traction, film, effects in TRACTION_LADDER:
+        models = {"film": MultigridPoint(levels=level) if film == "multigrid" else film}
+        outputs = list(TRACTION_OUTPUTS[:3])
+        if traction is not None:
+            models["traction"] = Fastsim(pressure="hertz") if traction == "fastsim_hertz" else traction
+            outputs = list(TRACTION_OUTPUTS)
+        times, result = [], None
+        for k in range(repeats + 1):  # the first run compiles the kernels it meets: not timed
+            start = time.perf_counter()
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                result = cc.Analysis(scene, outputs=outputs, models=models, effects=base | effects).run()
+            if k:
+                times.append(time.perf_counter() - start)
+        value = {name: result[name] for name in outputs}
+        needed = max(value["traction_needed_in"], value["traction_needed_out"])
+        margin = (min(value["traction_margin_in"], value["traction_margin_out"]) if traction is not None
+                  else 1.0 - needed / cvt.traction_coefficient)
+        rows.append({"rung": label, "creepage in [%]": 100.0 * abs(value.get("creepage_in", math.nan)),
+                     "capacity in [N]": value.get("traction_capacity_in",
+                                                  cvt.traction_coefficient * value["normal_force"]),
+                     "traction margin [%]": 100.0 * margin, "spin loss in [W]": value.get("spin_loss_in", math.nan),
+                     "creep loss in [W]": value.get("creep_loss_in", math.nan),
+                     "efficiency [%]": 100.0 * value.get("efficiency", math.nan),
+                     "median time [ms]": 1e3 * statistics.median(times)})
+    frame = pd.DataFrame(rows)
+    frame["efficiency vs last rung [pp]"] = frame["efficiency [%]"] - frame["efficiency [%]"].iloc[-1]
+    return frame
+
+
 def main(argv: list[str] | None = None) -> pd.DataFrame:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="2 x 2 points, levels 4..7, one run each")
@@ -345,7 +421,12 @@ def main(argv: list[str] | None = None) -> pd.DataFrame:
     parser.add_argument("--cam", action="store_true", help="the cam cycle: quasi-steady versus transient films")
     parser.add_argument("--point", action="store_true", help="circular point contacts: formulas versus grid levels")
     parser.add_argument("--friction", action="store_true", help="the friction ladder over the flat-follower turn")
+    parser.add_argument("--traction", action="store_true", help="the traction ladder of the ball-cone CVT")
     args = parser.parse_args(argv)
+    if args.traction:
+        frame = traction_rows(3 if args.quick else 5, args.repeats or (1 if args.quick else 3))
+        return write_results(frame, args.out, "accuracy_vs_time_traction", lambda f, p: None,
+                             lambda f: f.set_index("rung"))
     if args.friction:
         step, level = (4.0, 5) if args.quick else (1.0, 7)
         frame = friction_rows(step, level, args.repeats or (1 if args.quick else 3))

@@ -277,6 +277,7 @@ class Analysis:
             scene=self.scene,
             index=graph.index if graph else None,
             per_index=graph.per_index if graph else frozenset(),
+            variant_models=tuple(dict(models) for _, models in self.variants),
         )
 
     def sweep(self, grid: Any, *, executor: Any = None, progress: bool | None = None, errors: str = "record",
@@ -322,6 +323,8 @@ class Result:
     scene: Any = attrs.field(default=None, repr=False, eq=False)
     index: str | None = None  #: the input indexing array outputs (e.g. "cam_angle"), None for one-row results
     per_index: frozenset = frozenset()  #: outputs that are arrays over ``index``
+    #: the models of each variant (slot -> model, as given), for plots that evaluate more of a variant
+    variant_models: tuple[Mapping[str, Any], ...] = attrs.field(default=(), repr=False, eq=False)
 
     def __getitem__(self, name: str) -> Any:
         """SI value of ``name`` (a list with one entry per variant when there are several)."""

@@ -8,7 +8,9 @@
 # 1. check the geometry: ratio range, overrange, the spin-factor table (Tabela A.1), mu_min;
 # 2. analyse one operating point: forces, Hertz, film, FASTSIM traction with spin, stresses, life;
 # 3. sweep as the thesis did: power × ratio, overrange, ball and cone size, traction coefficient;
-# 4. run the same from a scene file.
+# 4. run the same from a scene file;
+# 5. balance the clamping and compare the EHL traction with FASTSIM;
+# 6. map efficiency and traction margin over ratio × power and ball size.
 #
 # Source: ../shared/reference/ball_cone_cvt_saccheto2008.md. The thesis prints no material data
 # (E = 207 GPa is implied, reference §4.6), no contact radius (24 mm reproduces its mu_min, 23.28 mm
@@ -192,3 +194,28 @@ columns = ["variant", "normal_force [N]", "p_h [MPa]", "stress_limit_exceeded", 
            "power_loss [W]", "efficiency [-]", "life_system [h]"]
 print(side_by_side.to_frame()[columns].T.to_string())
 side_by_side.plot(panels=("losses", "life")).savefig("cvt_losses.png", dpi=80)
+
+# %% [markdown]
+# ## 6. Where the drive works: efficiency and traction-margin maps
+# A traction drive is designed on two maps over its operating range: the traction margin of its weaker
+# contact (1 − F_t/capacity; below zero the balls slip grossly) and the efficiency where it holds.
+# `cvt_map` sweeps the scene over ratio × power (× ball size); `plot_cvt_map` draws both, with the
+# gross-slip points and the points above the stress limit marked. With the thesis's clamping the EHL
+# film cannot hold the balls anywhere (margin < 0, efficiency NaN: the drive transmits no power); in
+# axial balance it holds everywhere, and the spin loss makes the efficiency fall with power. The contact
+# map of the EHL traction shows the film's shear stress turning round the slip pole of the spin.
+
+# %%
+from camcontact.scenes.ball_cone_cvt_map import cvt_map, plot_cvt_map  # noqa: E402
+
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")  # the map's stress_limit_exceeded column holds the limit
+    maps = cvt_map(balanced, np.linspace(0.5, 2.0, 7), np.geomspace(20.0, 600.0, 6),
+                   ball_diameters=["14 mm", "20 mm"])
+    thesis_map = cvt_map(point, [0.5, 1.0, 2.0], ["20 W", "150 W", "600 W"])
+    contacts = cc.Analysis(balanced, models={"traction": "ehl_traction"}).run()
+print(maps.groupby("cvt.ball_diameter [mm]")[["efficiency [-]", "traction_margin [-]"]].agg(["min", "max"]))
+print("thesis clamping, EHL traction: gross slip at", int(thesis_map["gross_slip"].sum()), "of", len(thesis_map),
+      "points")
+plot_cvt_map(maps).savefig("cvt_maps.png", dpi=80)
+contacts.plot(panels=("in", "out")).savefig("cvt_ehl_contacts.png", dpi=80)

@@ -20,8 +20,10 @@ on the body whose creepages are given, opposing them (Kalker's signs, so the two
 scene). This is the viscous ("rigid-elastic"-free) film of Tevaarwerk & Johnson's traction analysis with
 spin: the film's elastic (Maxwell) compliance and the solids' tangential compliance are left out, so the
 creepage is all film shear (the solids' creep of FASTSIM is orders of magnitude smaller in a lubricated
-contact). Pressure: the Hertz semi-ellipsoid p = p_h sqrt(1 - x^2/a^2 - y^2/b^2); film: the central film
-h uniform.
+contact). Pressure: the Hertz semi-ellipsoid p = p_h sqrt(1 - x^2/a^2 - y^2/b^2) with the central film
+h uniform, or a :class:`PressureField` — the numerical EHL solution's pressure and local film h(x, y)
+over its pressurised nodes (the inlet build-up, the constriction and the pressure spike; the cavitated
+outlet, where the film has ruptured, carries no shear).
 
 Losses. The power the film dissipates, P = int tau . w dA >= 0, splits exactly into the creep loss
 -V (nu_x F_x + nu_y F_y) and the spin loss -V phi M_z (the same identity holds for FASTSIM in steady
@@ -74,7 +76,8 @@ from ..errors import InputError
 from .contact_temperature import band_flash_per_flux
 from .fluid_traction import BAND_MEAN_OVER_MAX, POINT_FLASH_FACTOR, RHEOLOGIES, TractionThermal, film_shear_stress
 
-__all__ = ["DEFAULT_MAX_CREEPAGE", "CentreLineTraction", "SpinTraction", "SpinTractionContact", "rolling_losses"]
+__all__ = ["DEFAULT_MAX_CREEPAGE", "CentreLineTraction", "PressureField", "SpinTraction", "SpinTractionContact",
+           "TractionMap", "rolling_losses"]
 
 #: largest |nu_x| over which the capacity is sought (5 %: traction drives run at 0.1-3 % creep)
 DEFAULT_MAX_CREEPAGE = 0.05
@@ -109,7 +112,65 @@ class CentreLineTraction:
     x: np.ndarray  #: (1, n) positions from +a to -a [m]
     y: np.ndarray  #: (1,) the strip's y = 0 [m]
     Tx: np.ndarray  #: (1, n) traction along x on the body [Pa]
-    p: np.ndarray  #: (1, n) Hertz pressure [Pa]
+    p: np.ndarray  #: (1, n) pressure [Pa] (Hertz, or the pressure field's)
+
+
+@attrs.frozen(eq=False)
+class TractionMap:
+    """The film's traction over a contact in one state, for a map (SI, Kalker's frame, on the body)."""
+
+    x: np.ndarray  #: node positions along rolling [m] (the leading edge at +a)
+    y: np.ndarray  #: node positions across rolling [m]
+    tx: np.ndarray  #: traction along x [Pa]
+    ty: np.ndarray  #: traction along y [Pa]
+    limited: np.ndarray  #: the limiting shear stress bounds the film there [bool]
+    a: float  #: Hertz semi-axis along rolling [m]
+    b: float  #: Hertz semi-axis across rolling [m]
+    pole: tuple[float, float]  #: slip pole (w = 0): (-nu_y/phi, nu_x/phi) [m] (inf without spin)
+
+
+@attrs.frozen(eq=False)
+class PressureField:
+    """Pressure and film of a contact on a uniform rectangular grid (SI): the numerical EHL solution
+    (:meth:`camcontact.ehl.point_solution.PointEHLSolution.dimensional` gives x, y, p, h).
+
+    ``x`` runs along the entrainment, the inlet at its smallest values (the solver's frame); the traction
+    works in Kalker's frame, whose x points to the leading edge (the inlet), so its nodes are at -x.
+    """
+
+    x: np.ndarray = attrs.field(converter=lambda v: np.asarray(v, dtype=float))  #: (nx,) [m]
+    y: np.ndarray = attrs.field(converter=lambda v: np.asarray(v, dtype=float))  #: (ny,) [m]
+    p: np.ndarray = attrs.field(converter=lambda v: np.asarray(v, dtype=float))  #: (ny, nx) [Pa]
+    h: np.ndarray = attrs.field(converter=lambda v: np.asarray(v, dtype=float))  #: (ny, nx) [m]
+
+    def __attrs_post_init__(self):
+        x, y, p, h = self.x, self.y, self.p, self.h
+        if x.ndim != 1 or y.ndim != 1 or x.size < 3 or y.size < 3 or p.shape != (y.size, x.size) \
+                or h.shape != p.shape:
+            raise InputError(f"spin traction: pressure field of shapes x {x.shape}, y {y.shape}, p {p.shape}, "
+                             f"h {h.shape}; allowed: x (nx,), y (ny,), p and h (ny, nx), nx, ny >= 3")
+        steps = np.concatenate([np.diff(x) / (x[1] - x[0]), np.diff(y) / (y[1] - y[0])])
+        if not (np.all(np.isfinite(steps)) and np.allclose(steps, 1.0, rtol=1e-6) and x[1] > x[0] and y[1] > y[0]):
+            raise InputError("spin traction: pressure field x and y must be uniform and increasing")
+        if not (np.all(np.isfinite(p)) and np.all(np.isfinite(h))):
+            raise InputError("spin traction: pressure field has non-finite pressures or films")
+        if not np.any(p > 0.0) or np.any(h[p > 0.0] <= 0.0):
+            raise InputError(f"spin traction: pressure field with max p = {p.max():.4g} Pa and min film "
+                             f"{h[p > 0.0].min() if np.any(p > 0.0) else float('nan'):.4g} m where p > 0; allowed: "
+                             "a pressurised region with a positive film")
+
+    def nodes(self):
+        """Kalker-frame nodes of the pressurised region: (x, y, p, h, dA) as flat arrays."""
+        X, Y = np.meshgrid(-self.x, self.y)
+        inside = self.p > 0.0
+        cell = (self.x[1] - self.x[0]) * (self.y[1] - self.y[0])
+        return (X[inside], Y[inside], self.p[inside], self.h[inside], np.full(int(inside.sum()), cell))
+
+    def centre_line(self, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Pressure and film on y = 0 (the row nearest it) at Kalker-frame positions ``x``."""
+        j = int(np.argmin(np.abs(self.y)))
+        return (np.interp(-x, self.x, self.p[j], left=0.0, right=0.0),
+                np.interp(-x, self.x, self.h[j]))
 
 
 @functools.lru_cache(maxsize=16)
@@ -178,12 +239,15 @@ class SpinTractionContact:
         Lumped contact temperature (module docstring); None: isothermal.
     n_radial, n_angular : int
         Quadrature nodes (default 16 x 64).
+    field : PressureField, optional
+        The numerical pressure and film: its pressurised nodes replace the Hertz ellipse's quadrature (a, b,
+        p_h and the central ``film_thickness`` still set the thermal model's band and film).
     """
 
     def __init__(self, *, a, b, p_h, film_thickness, rolling_speed, eta0, log_viscosity_ratio: Callable,
                  rheology: str = "eyring", eyring_stress=None, limiting_shear_stress=0.0, limiting_shear_slope=None,
                  thermal: TractionThermal | None = None, n_radial: int = DEFAULT_RADIAL,
-                 n_angular: int = DEFAULT_ANGULAR):
+                 n_angular: int = DEFAULT_ANGULAR, field: PressureField | None = None):
         if rheology not in RHEOLOGIES:
             raise InputError(f"spin traction: rheology = {rheology!r}; allowed: {', '.join(map(repr, RHEOLOGIES))}")
         for name, value, low in (("n_radial", n_radial, 4), ("n_angular", n_angular, 8)):
@@ -194,17 +258,22 @@ class SpinTractionContact:
                              "of the gauge pressure [Pa] giving ln(eta/eta0)")
         if thermal is not None and not isinstance(thermal, TractionThermal):
             raise InputError(f"spin traction: thermal = {thermal!r}; allowed: None or a TractionThermal")
+        if field is not None and not isinstance(field, PressureField):
+            raise InputError(f"spin traction: field = {type(field).__name__}; allowed: None or a PressureField")
         self.a, self.b = _number("a", a, low=0.0, low_inclusive=False), _number("b", b, low=0.0, low_inclusive=False)
         self.p_h = _number("p_h", p_h, low=0.0, low_inclusive=False)
         self.h = _number("film_thickness", film_thickness, low=0.0, low_inclusive=False)
         self.V = _number("rolling_speed", rolling_speed, low=0.0, low_inclusive=False)
         eta0 = _number("eta0", eta0, low=0.0, low_inclusive=False)
-        self.rheology, self.thermal = rheology, thermal
-        X, Y, ratio, weight = _grid(int(n_radial), int(n_angular))
-        self.x, self.y = self.a * X, self.b * Y
-        self.dA = self.a * self.b * weight
+        self.rheology, self.thermal, self.field = rheology, thermal, field
+        if field is None:
+            X, Y, ratio, weight = _grid(int(n_radial), int(n_angular))
+            self.x, self.y = self.a * X, self.b * Y
+            self.dA = self.a * self.b * weight
+            pressure, film = self.p_h * ratio, self.h
+        else:
+            self.x, self.y, pressure, film, self.dA = field.nodes()
         self.area = math.pi * self.a * self.b
-        pressure = self.p_h * ratio
         self.normal_force = float(np.sum(pressure * self.dA))
         self.law, self.eta0 = log_viscosity_ratio, eta0
         self.tau0 = (_number("eyring_stress", eyring_stress, low=0.0, low_inclusive=False) if rheology == "eyring"
@@ -213,20 +282,20 @@ class SpinTractionContact:
         if limiting_shear_slope is not None:
             self.limit = (_number("limiting_shear_stress", limiting_shear_stress, low=0.0),
                           _number("limiting_shear_slope", limiting_shear_slope, low=0.0))
-        self.log_base, self.tau_limit = self._node_values(pressure)
+        self.log_base, self.tau_limit = self._node_values(pressure, film)
         self.per_flux = 0.0
         if thermal is not None:
             flash = band_flash_per_flux(self.a, self.V, self.V, thermal.effusivity_1, thermal.effusivity_2)
             self.per_flux = BAND_MEAN_OVER_MAX * POINT_FLASH_FACTOR * flash + self.h / (12.0 * thermal.oil_conductivity)
 
-    def _node_values(self, pressure: np.ndarray):
-        """ln(eta(p)/h) at the nodes (minus ln tau0 for eyring: + ln|w| gives ln(eta gamma[/tau0])) and
-        tau_L there (None without a limit)."""
+    def _node_values(self, pressure: np.ndarray, film):
+        """ln(eta(p)/h) at the nodes of pressure ``pressure`` and film ``film`` [m] (minus ln tau0 for eyring:
+        + ln|w| gives ln(eta gamma[/tau0])) and tau_L there (None without a limit)."""
         log_ratio = np.asarray(self.law(pressure), dtype=float)
         if log_ratio.shape != pressure.shape or not np.all(np.isfinite(log_ratio)):
             raise InputError("spin traction: log_viscosity_ratio gave non-finite or misshaped values at the contact's "
                              f"pressures (p_h = {self.p_h:.4g} Pa)")
-        log_base = math.log(self.eta0) - math.log(self.h) + log_ratio
+        log_base = math.log(self.eta0) - np.log(film) + log_ratio
         if self.tau0 is not None:
             log_base = log_base - math.log(self.tau0)
         tau_limit = None if self.limit is None else self.limit[0] + self.limit[1] * pressure
@@ -288,18 +357,46 @@ class SpinTractionContact:
         return SpinTraction(Fx, Fy, Mz, power, losses["creep_loss"], losses["spin_loss"], limited_fraction, dT,
                             converged, nu_x, nu_y, phi)
 
+    def _traction_at(self, state: SpinTraction, x, y, pressure, film):
+        """Traction (t_x, t_y) on the body [Pa] and the limited mask of ``state`` at the points (x, y) of
+        pressure ``pressure`` and film ``film``."""
+        beta = 0.0 if self.thermal is None else self.thermal.thermoviscous_coefficient
+        nodes = (x, y, *self._node_values(pressure, film))
+        wx, wy, speed, tau, limited = self._field(state.creepage_x, state.creepage_y, state.spin,
+                                                  beta * state.temperature_rise, nodes)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            share = -np.where(speed > 0.0, tau / speed, 0.0)
+        return share * wx, share * wy, limited
+
     def centre_line(self, state: SpinTraction, n: int = 41) -> CentreLineTraction:
         """Pressure and traction T_x on y = 0 for a ``state`` of this contact (its creepages and
-        temperature rise), at ``n`` element centres from the leading edge."""
-        beta = 0.0 if self.thermal is None else self.thermal.thermoviscous_coefficient
+        temperature rise), at ``n`` element centres from the leading edge x = a (the Hertz pressure, or the
+        field's interpolated)."""
         x = self.a * (1.0 - (np.arange(n) + 0.5) * (2.0 / n))
-        pressure = self.p_h * np.sqrt(np.clip(1.0 - (x / self.a) ** 2, 0.0, None))
-        nodes = (x, np.zeros(n), *self._node_values(pressure))
-        wx, _, speed, tau, _ = self._field(state.creepage_x, state.creepage_y, state.spin,
-                                           beta * state.temperature_rise, nodes)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            tx = -np.where(speed > 0.0, tau / speed, 0.0) * wx
+        if self.field is None:
+            pressure, film = self.p_h * np.sqrt(np.clip(1.0 - (x / self.a) ** 2, 0.0, None)), self.h
+        else:
+            pressure, film = self.field.centre_line(x)
+        tx, _, _ = self._traction_at(state, x, np.zeros(n), pressure, film)
         return CentreLineTraction(x[None, :], np.zeros(1), tx[None, :], pressure[None, :])
+
+    def traction_map(self, state: SpinTraction, n: int = 41) -> TractionMap:
+        """The traction of ``state`` over the contact for a map: on an n x n grid of the Hertz ellipse, or on
+        (about n^2 of) the pressure field's pressurised nodes."""
+        if self.field is None:
+            X, Y = np.meshgrid(np.linspace(-1.0, 1.0, n), np.linspace(-1.0, 1.0, n))
+            inside = X ** 2 + Y ** 2 < 1.0
+            x, y = self.a * X[inside], self.b * Y[inside]
+            pressure, film = self.p_h * np.sqrt(1.0 - X[inside] ** 2 - Y[inside] ** 2), self.h
+        else:
+            x, y, pressure, film, _ = self.field.nodes()
+            stride = max(1, math.ceil(x.size / (n * n)))
+            x, y, pressure, film = x[::stride], y[::stride], pressure[::stride], film[::stride]
+        tx, ty, limited = self._traction_at(state, x, y, pressure, film)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            pole = ((-state.creepage_y / state.spin, state.creepage_x / state.spin) if state.spin != 0.0
+                    else (math.inf, math.inf))
+        return TractionMap(x, y, tx, ty, limited, self.a, self.b, pole)
 
     # ------------------------------------------------------------------ force control
     def capacity(self, spin=0.0, creepage_y=0.0, max_creepage: float = DEFAULT_MAX_CREEPAGE) -> SpinTraction:

@@ -102,11 +102,12 @@ class EhlTraction(TractionModel):
     n_angular: int = attrs.field(default=DEFAULT_ANGULAR, validator=_count(8))
 
     def contact(self, a_rolling, b_lateral, p_h, h_c, rolling_speed, lubricant_state, effusivity=None,
-                fluid=None) -> SpinTractionContact:
-        """The contact prepared for many creepage states; ``fluid`` overrides :attr:`fluid`."""
+                fluid=None, field=None) -> SpinTractionContact:
+        """The contact prepared for many creepage states; ``fluid`` overrides :attr:`fluid`; ``field`` (a
+        :class:`~camcontact.contact.spin_traction.PressureField`) puts it on a numerical pressure and film."""
         shear_law = fluid or self.fluid or EyringTraction()
         return SpinTractionContact(a=a_rolling, b=b_lateral, p_h=p_h, film_thickness=h_c, rolling_speed=rolling_speed,
-                                   n_radial=self.n_radial, n_angular=self.n_angular,
+                                   n_radial=self.n_radial, n_angular=self.n_angular, field=field,
                                    **shear_law.film_rheology(lubricant_state, effusivity))
 
     def solve(self, tangential_force, spin_creepage, contact: SpinTractionContact) -> dict[str, Any]:

@@ -52,6 +52,7 @@ from ..contact.geometry import reduced_modulus
 from ..contact.hertz_elliptical import METHODS as HERTZ_METHODS
 from ..contact.slice_stress import MEASURES
 from ..errors import InputError
+from ..models.film_multigrid_point import MultigridPoint
 from ..models.life_lundberg_palmgren import LundbergPalmgren
 from ..models.traction import Fastsim
 from ..models.traction_spin import EhlTraction
@@ -164,15 +165,19 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
     steps = [
         Step.of(ball_cone_motion), Step.of(ball_cone_contact_forces), Step.of(ball_cone_hertz),
         lubricant_step(scene.cvt.lubricant, scene.si.temperature),
-        Step.of(ball_cone_films, provides=tuple(f"{q}_{side}" for q in films_of(film_model) for side in SIDES)),
+        Step.of(ball_cone_films, provides=tuple(f"{q}_{side}" for q in (*films_of(film_model), "pressure_field")
+                                                for side in SIDES)),
         *(Step.of(film_parameter, name=f"lambda_{side}", rename={"h": f"h_min_{side}", "sigma1": "sigma",
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{side}"})
           for side in SIDES),
-        (Step.of(ball_cone_ehl_traction, **{"extra" if "thermal" in effects else "optional": ("effusivity",)})
+        (Step.of(ball_cone_ehl_traction, optional=("pressure_field_in", "pressure_field_out", "numerical_pressure")
+                 + (() if "thermal" in effects else ("effusivity",)),
+                 extra=("effusivity",) if "thermal" in effects else ())
          if ehl else Step.of(ball_cone_traction)),
         Step.of(ball_cone_efficiency), Step.of(ball_cone_slice_stresses), Step.of(ball_cone_life),
     ]
-    inputs = {**ball_cone_cvt_inputs(scene, effects), **chosen, "film_model": film_model}
+    inputs = {**ball_cone_cvt_inputs(scene, effects), **chosen, "film_model": film_model,
+              "numerical_pressure": isinstance(film_model, MultigridPoint)}
     if ehl:
         inputs["fluid_model"] = fluid_traction_model(scene.cvt.lubricant, effects | {"non_newtonian"},
                                                      traction.fluid or "eyring")

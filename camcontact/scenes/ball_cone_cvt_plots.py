@@ -1,5 +1,6 @@
-"""Plots of a ball-cone CVT result: stick/slip maps with the traction of both contacts (FASTSIM), the
-contact losses and efficiency, lives per track."""
+"""Plots of a ball-cone CVT result: maps of the traction over both contacts (FASTSIM: stick and slip; EHL:
+the film's shear stress, where the limiting shear bounds it and the slip pole of the spin), the contact
+losses and efficiency, lives per track."""
 
 from __future__ import annotations
 
@@ -30,13 +31,65 @@ def _contact_map(ax, row, side, result):
     scale = 1e3
     ax.scatter(field.y[:, None].repeat(field.x.shape[1], 1) * scale, field.x * scale, c=np.where(field.stick, 0.8, 0.3),
                cmap="RdYlBu", vmin=0, vmax=1, s=12, marker="s")
-    ax.quiver(y * scale, field.x * scale, field.Ty, field.Tx, angles="xy", color="k", width=0.004)
+    arrows = ax.quiver(y * scale, field.x * scale, field.Ty, field.Tx, angles="xy", color="k", width=0.004)
+    _arrow_key(ax, arrows, np.hypot(field.Tx, field.Ty))
     t = np.linspace(0, 2 * np.pi, 200)
     ax.plot(row["a_transverse"] * scale * np.cos(t), row["a_rolling"] * scale * np.sin(t), "k-", lw=0.8)
     ax.set_aspect("equal")
     ax.set(xlabel="y (across rolling) [mm]", ylabel="x (rolling) [mm]",
-           title=f"FASTSIM, {side}put contact: slip {100 * row[f'slip_fraction_{side}']:.0f} % of the area\n"
-                 f"(blue stick, orange slip; {row[f'traction_regime_{side}'][:12]})")
+           title=f"FASTSIM, {side}put contact ({row[f'traction_regime_{side}']})\n"
+                 f"slip (orange) {100 * row[f'slip_fraction_{side}']:.0f} % of the area, stick blue")
+
+
+def _arrow_key(ax, arrows, magnitudes):
+    """The arrows' scale: a key arrow of a round traction [MPa] above the map."""
+    top = float(np.nanmax(magnitudes)) if np.size(magnitudes) else 0.0
+    if top > 0.0:
+        key = float(f"{0.5 * top / 1e6:.1g}")
+        ax.quiverkey(arrows, 0.85, -0.24, key * 1e6, f"{key:g} MPa", labelpos="E", coordinates="axes",
+                     fontproperties={"size": 7})
+
+
+def _ehl_map(ax, row, side, result):
+    """The EHL traction of the variant of ``row`` evaluated again for its map: the film's shear stress |tau|
+    (colour), its direction (arrows), where the limiting shear stress bounds it (dashed) and the slip pole."""
+    import matplotlib.pyplot as plt
+    from matplotlib.tri import LinearTriInterpolator, Triangulation
+
+    from ..analysis import Analysis
+
+    k = result.rows.index(row)
+    models = result.variant_models[k] if result.variant_models else {}
+    again = Analysis(result.scene, outputs=[f"traction_map_{side}"], models=models, effects=result.effects).run()
+    field = again[f"traction_map_{side}"]
+    scale = 1e3
+    tau = np.hypot(field.tx, field.ty) / 1e6
+    shaded = ax.tricontourf(field.y * scale, field.x * scale, tau, levels=12, cmap="viridis")
+    ax.figure.colorbar(shaded, ax=ax, label="film shear stress |τ| [MPa]", shrink=0.85)
+    handles = []
+    if field.limited.any() and not field.limited.all():
+        ax.tricontour(field.y * scale, field.x * scale, field.limited.astype(float), levels=[0.5], colors="w",
+                      linestyles="--", linewidths=1.2)
+        handles.append(plt.Line2D([], [], color="k", ls="--", label=f"τ = τ_L outside ({100 * field.limited.mean():.0f} %)"))
+    # arrows on a coarse lattice over the ellipse, the traction interpolated linearly between the map's nodes
+    triangles = Triangulation(field.y * scale, field.x * scale)
+    Yc, Xc = np.meshgrid(np.linspace(-0.9, 0.9, 11) * field.b * scale, np.linspace(-0.9, 0.9, 11) * field.a * scale)
+    inside = (Xc / (field.a * scale)) ** 2 + (Yc / (field.b * scale)) ** 2 < 0.85
+    ty, tx = (LinearTriInterpolator(triangles, t)(Yc[inside], Xc[inside]) for t in (field.ty, field.tx))
+    arrows = ax.quiver(Yc[inside], Xc[inside], ty, tx, angles="xy", color="w", edgecolor="k", linewidth=0.3,
+                       width=0.006)
+    _arrow_key(ax, arrows, np.hypot(field.tx, field.ty))
+    pole_x, pole_y = field.pole
+    if abs(pole_x) <= 1.2 * field.a and abs(pole_y) <= 1.2 * field.b:
+        handles += ax.plot(pole_y * scale, pole_x * scale, "+", color="magenta", ms=12, mew=2, label="slip pole")
+    if handles:
+        ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.16), frameon=False)
+    t = np.linspace(0, 2 * np.pi, 200)
+    ax.plot(field.b * scale * np.cos(t), field.a * scale * np.sin(t), "k-", lw=0.8)
+    ax.set_aspect("equal")
+    ax.set(xlabel="y (across rolling) [mm]", ylabel="x (rolling, leading edge up) [mm]",
+           title=f"EHL traction, {side}put contact ({row[f'traction_regime_{side}']})\n"
+                 f"creepage {100 * abs(row[f'creepage_{side}']):.2f} %, margin {100 * row[f'traction_margin_{side}']:.0f} %")
 
 
 LOSSES = ("creep_loss_in", "spin_loss_in", "creep_loss_out", "spin_loss_out", "efficiency")
@@ -49,30 +102,35 @@ def _losses(ax, result):
     names = LOSSES[:4]
     for k, (label, row) in enumerate(zip(labels, result.rows)):
         ax.bar(np.arange(len(names)) + k * width, [row[n] for n in names], width=width,
-               label=f"{label}: efficiency {100 * row['efficiency']:.1f} %")
+               label=f"{label}: efficiency {100 * row['efficiency']:.1f} %" if np.isfinite(row["efficiency"])
+               else f"{label}: gross slip, no efficiency")
     ax.set_xticks(np.arange(len(names)) + 0.4 - width / 2, [n.replace("_loss_", " ") for n in names])
     ax.set(ylabel="power loss per contact [W]", title="contact losses (creep, spin)")
     ax.legend(fontsize=8)
 
 
-def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsize=(16.0, 4.6)):
-    """Panels ``"in"``/``"out"``: stick/slip map and traction arrows of the first variant's input and
-    output contacts (FASTSIM's outputs); ``"losses"``: creep and spin loss per contact and the drive's
+def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsize=(18.0, 5.2)):
+    """Panels ``"in"``/``"out"``: the traction map of the first variant's input and output contact (FASTSIM:
+    stick/slip elements and traction arrows; EHL traction: the film's shear stress, evaluated again for the
+    map); ``"losses"``: creep and spin loss per contact and the drive's
     efficiency, per variant; ``"life"``: L10 [h] per track and of the system, per variant (log scale)."""
     import matplotlib.pyplot as plt
 
     contact_needs = ("a_rolling", "a_transverse", "normal_force")
-    need = {"in": contact_needs + ("creepage_in", "spin_in", "slip_fraction_in", "traction_regime_in"),
-            "out": contact_needs + ("creepage_out", "spin_out", "slip_fraction_out", "traction_regime_out"),
-            "life": TRACKS, "losses": LOSSES}
+    need = {side: contact_needs + tuple(f"{q}_{side}" for q in ("creepage", "spin", "traction_regime",
+                                                                 "traction_margin"))
+            for side in ("in", "out")} | {"life": TRACKS, "losses": LOSSES}
     chosen = [p for p in panels if all(k in result.outputs for k in need[p])]
     if not chosen:
         raise InputError(f"nothing to plot: the panels {list(panels)} need the outputs {need}")
     fig, axes = plt.subplots(1, len(chosen), figsize=figsize, squeeze=False)
     for ax, panel in zip(axes[0], chosen):
-        if panel in ("in", "out"):  # the first variant that ran FASTSIM
-            row = next(r for r in result.rows if r.get(f"slip_fraction_{panel}") is not None)
-            _contact_map(ax, row, panel, result)
+        if panel in ("in", "out"):  # the first variant's contact, by its traction model
+            row = result.rows[0]
+            if row.get(f"slip_fraction_{panel}") is not None:
+                _contact_map(ax, row, panel, result)
+            else:
+                _ehl_map(ax, row, panel, result)
         elif panel == "losses":
             _losses(ax, result)
         else:

@@ -11,6 +11,7 @@ sigma2^2) (Delabenetta 2021 Eq. 13). Films and roughness [m], loads per length [
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Iterable
 from typing import Any
 
@@ -19,8 +20,9 @@ import numpy as np
 
 from .. import registry
 from ..contact.roughness import composite_roughness, lambda_ratio, lubrication_regime, sinusoid_amplitude
+from ..contact.spin_traction import PressureField
 from ..ehl.groups import hamrock_line, moes_line
-from ..errors import InputError
+from ..errors import ConvergenceWarning, InputError
 from ..models.base import FilmModel
 from ..models.film_line import LINE_INPUTS
 from ..models.film_point import POINT_INPUTS
@@ -269,14 +271,28 @@ def bearing_lubrication(Q, Lambda_inner, Lambda_outer):
 
 
 # ----------------------------------------------------------------------------- ball-cone contacts
-@step("film", provides=("h_c_in", "h_min_in", "h_c_out", "h_min_out"), model=model_name, version=model_version)
+@step("film", provides=("h_c_in", "h_min_in", "h_c_out", "h_min_out", "pressure_field_in", "pressure_field_out"),
+      model=model_name, version=model_version)
 def ball_cone_films(film_model, Rx, Ry, normal_force, E_reduced, rolling_speed_in, rolling_speed_out, eta0, alpha,
                     piezoviscosity, lubricant_state, density_law):
-    """Central and minimum films [m] at the CVT's input and output contact (those the point film model gives)."""
+    """Central and minimum films [m] at the CVT's input and output contact (those the point film model gives)
+    and, where the model is the numerical solver, its pressure and film over the grid
+    (``pressure_field_in``/``_out``, a :class:`~camcontact.contact.spin_traction.PressureField`; None for a
+    formula, and with a ConvergenceWarning for a solution that did not converge)."""
     out = {}
     for side, speed in (("in", rolling_speed_in), ("out", rolling_speed_out)):
         produced = film_model({"Rx": Rx, "Ry": Ry, "F": normal_force, "E_reduced": E_reduced, "u_m": speed,
                                "eta0": eta0, "alpha": alpha if piezoviscosity else 0.0,
                                "lubricant_state": lubricant_state, "density_law": density_law})
+        solution = produced.get("ehl_solution")
+        field = None
+        if solution is not None and solution.record.converged:
+            values = solution.dimensional(Rx, normal_force, E_reduced)
+            field = PressureField(values["x"], values["y"], values["p"], values["h"])
+        elif solution is not None:
+            warnings.warn(f"ball-cone {side}put contact: the numerical film did not converge; its pressure is not "
+                          "passed on (the EHL traction falls back to the Hertz pressure, traction_valid False)",
+                          ConvergenceWarning, stacklevel=2)
+        out[f"pressure_field_{side}"] = field
         out.update({f"{q}_{side}": float(produced[q]) for q in films_of(film_model)})
     return out

@@ -8,15 +8,18 @@ largest force at |creepage| <= its ``max_creepage``). Losses per contact: the cr
 nu_y F_y) and the spin loss -V phi M_z (in steady rolling the work of the creep forces and the spin
 moment on the rigid creepages is the dissipation, for both models; Loewenthal & Zaretsky 1985, NASA
 RP-1154 §6.6). Efficiency 1 - n (P_in + P_out)/P: the contact losses only (no bearing, churning or
-windage losses).
+windage losses); none (NaN) where a contact slips grossly and the drive does not transmit the power.
 
 Forces [N], semi-axes [m], shear modulus [Pa], spin [1/m], speeds [m/s], powers [W]; creepages [-].
 """
 
 from __future__ import annotations
 
+import math
+
 from ..contact.fastsim import GrossSlipError, fastsim, solve_creepage
 from ..contact.spin_traction import rolling_losses
+from ..errors import InputError
 from ..step_graph import step
 
 __all__ = ["CONTACT_TRACTION", "EHL_TRACTION", "FASTSIM_TRACTION", "ball_cone_ehl_traction", "ball_cone_efficiency",
@@ -28,7 +31,8 @@ CONTACT_TRACTION = ("creepage", "traction_regime", "gross_slip", "traction_capac
                     "spin_moment", "creep_loss", "spin_loss", "power_loss", "surface_traction")
 #: the FASTSIM step's and the EHL step's outputs
 FASTSIM_TRACTION = tuple(f"{q}_{side}" for q in CONTACT_TRACTION + ("slip_fraction",) for side in SIDES)
-EHL_TRACTION = tuple(f"{q}_{side}" for q in CONTACT_TRACTION + ("traction_temperature_rise", "traction_valid")
+EHL_TRACTION = tuple(f"{q}_{side}" for q in CONTACT_TRACTION + ("traction_temperature_rise", "traction_valid",
+                                                                  "traction_map")
                      for side in SIDES)
 
 
@@ -74,31 +78,46 @@ def ball_cone_traction(traction_model, a_rolling, a_transverse, normal_force, tr
 
 
 @step("traction", provides=EHL_TRACTION,
-      model=lambda traction_model, fluid_model: f"ehl_traction ({fluid_model.name}"
-                                                f"{', thermal' if fluid_model.thermal else ''})")
+      model=lambda fluid_model, numerical_pressure: f"ehl_traction ({fluid_model.name}"
+                                                    f"{', thermal' if fluid_model.thermal else ''}"
+                                                    f"{', numerical pressure' if numerical_pressure else ''})")
 def ball_cone_ehl_traction(traction_model, fluid_model, a_rolling, a_transverse, p_h, h_c_in, h_c_out,
                            tangential_force_in, tangential_force_out, spin_in, spin_out, spin, rolling_speed_in,
                            rolling_speed_out, lubricant_state, **inputs):
     """The EHL film's traction with spin (:class:`~camcontact.models.traction_spin.EhlTraction`) at the CVT's
     input and output contact, on each contact's central film: creepage, regime ("viscous", "plateau",
     "gross slip") and ``gross_slip``, capacity and margin, spin moment, creep and spin losses, the lumped
-    temperature rise (thermal fluid), ``traction_valid`` and the centre-line traction for the slice
-    stresses (``surface_traction``). ``inputs``: ``effusivity`` of the surfaces for a thermal fluid."""
+    temperature rise (thermal fluid), ``traction_valid``, the centre-line traction for the slice
+    stresses (``surface_traction``) and the traction over the contact for its map (``traction_map``). ``inputs``: ``effusivity`` of the surfaces for a thermal fluid;
+    ``pressure_field_in``/``_out``, the numerical film's pressure and film (the traction is then taken
+    over them instead of the Hertz pressure and the central film; None: Hertz) and ``numerical_pressure``
+    (the scene's film is numerical: a side without a field — its solution did not converge — falls back
+    to the Hertz pressure with ``traction_valid`` False)."""
     effusivity = inputs.get("effusivity")
     out = {}
     for side, force, phi, speed, h in (("in", tangential_force_in, spin_in, rolling_speed_in, h_c_in),
                                        ("out", tangential_force_out, spin_out, rolling_speed_out, h_c_out)):
+        if not h > 0.0:  # a film model that failed (a numerical film that closed)
+            raise InputError(f"traction step: the {side}put contact's central film h_c = {h!r} m; the EHL traction "
+                             "needs a film > 0 (a numerical film that did not converge: finer levels, or a film "
+                             "formula)")
         contact = traction_model.contact(a_rolling, a_transverse, p_h, h, speed, lubricant_state, effusivity,
-                                         fluid=fluid_model)
+                                         fluid=fluid_model, field=inputs.get(f"pressure_field_{side}"))
         solution = traction_model.solve(force, phi if spin else 0.0, contact)
-        solution["surface_traction"] = contact.centre_line(solution.pop("state"))
+        state = solution.pop("state")
+        solution["surface_traction"], solution["traction_map"] = contact.centre_line(state), contact.traction_map(state)
+        if inputs.get("numerical_pressure") and contact.field is None:
+            solution["traction_valid"] = False
         out.update({f"{key}_{side}": value for key, value in solution.items()})
     return out
 
 
 @step("losses", provides=("power_loss", "efficiency"))
-def ball_cone_efficiency(power, ball_count, power_loss_in, power_loss_out):
+def ball_cone_efficiency(power, ball_count, power_loss_in, power_loss_out, gross_slip_in, gross_slip_out):
     """The drive's contact losses n (P_in + P_out) [W] and efficiency 1 - losses/power [-] (no bearing,
-    churning or windage losses)."""
+    churning or windage losses). Where a contact slips grossly the drive does not transmit the power: both
+    NaN (the ``gross_slip`` columns say why; the contacts' own losses are those at their capacity)."""
+    if gross_slip_in or gross_slip_out:
+        return {"power_loss": math.nan, "efficiency": math.nan}
     loss = ball_count * (power_loss_in + power_loss_out)
     return {"power_loss": loss, "efficiency": 1.0 - loss / power}

@@ -134,6 +134,40 @@ def test_plot(tmp_path):
     figure.savefig(tmp_path / "cvt_models.png")
 
 
+def test_plot_of_the_ehl_traction_maps_the_film_shear(tmp_path):
+    """The default (EHL) traction's contact panels: the film shear stress over the ellipse (a colour bar each),
+    evaluated again with the variant's models; its traction map transmits the contact's force."""
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    result = cc.Analysis(point(power="50 W")).run()
+    figure = result.plot(panels=("in", "out"))
+    assert len(figure.axes) == 4 and "EHL traction, input contact" in figure.axes[0].get_title()
+    figure.savefig(tmp_path / "cvt_ehl.png")
+    again = cc.Analysis(point(power="50 W"), outputs=["traction_map_in", "tangential_force_in", "a_rolling",
+                                                       "a_transverse"]).run()
+    field, (a, b) = again["traction_map_in"], (again["a_rolling"], again["a_transverse"])
+    cell = (2 * a / 40) * (2 * b / 40)  # the map's 41 x 41 lattice over the ellipse
+    assert np.sum(field.tx) * cell == pytest.approx(again["tangential_force_in"], rel=0.05)  # F_x = int t_x dA
+
+
+def test_ehl_traction_on_the_numerical_pressure():
+    """film = multigrid: the traction is taken over the numerical pressure and film (step label says so); at a
+    point the solver converges on 65^2 (3000 rpm, 150 W: M ~ 300, p_h 1.9 GPa) creepage, capacity and efficiency
+    within 3 % of the Hertz pressure's. (A solution that does not converge: tests/unit/test_steps_traction.py.)"""
+    from camcontact.models.film_multigrid_point import MultigridPoint
+
+    outputs = ["creepage_in", "traction_capacity_in", "efficiency", "traction_valid_in"]
+    scene = point(power="150 W", input_speed="3000 rpm")
+    hertz = cc.Analysis(scene, outputs=outputs).run()
+    numerical = cc.Analysis(scene, outputs=outputs, models={"film": MultigridPoint(levels=3)}).run()
+    assert any(r.model == "ehl_traction (eyring, numerical pressure)" for r in numerical.records)
+    for name in outputs[:3]:
+        assert numerical[name] == pytest.approx(hertz[name], rel=0.03) and numerical[name] != hertz[name]
+    assert numerical["traction_valid_in"]
+
+
 def test_lives_in_cycles_and_hours_agree():
     """Hours = cycles / (stress cycles per revolution x speed) (Eq. 5.18): 9 per cone revolution at 60 rpm,
     one per ball revolution."""

@@ -90,3 +90,17 @@ def test_accuracy_vs_time_friction_quick(tmp_path):
     # the contact temperature lowers the friction power
     assert by.loc["mixed + eyring + thermal", "friction power mean [W]"] < by.loc["mixed + eyring isothermal",
                                                                                  "friction power mean [W]"]
+
+
+def test_accuracy_vs_time_traction_quick(tmp_path):
+    frame = _load("accuracy_vs_time").main(["--traction", "--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "accuracy_vs_time_traction.csv").exists()
+    by = frame.set_index("rung")
+    assert len(by) == 7 and (frame["median time [ms]"] > 0).all()
+    # the constant-Ct check and FASTSIM share the Coulomb capacity Ct N; the film's traction is lower
+    ct = by.loc["constant Ct (thesis check)", "capacity in [N]"]
+    assert by.loc["FASTSIM, Kalker's parabolic pressure", "capacity in [N]"] == ct
+    assert by.loc["EHL Eyring isothermal, Hertz pressure", "capacity in [N]"] < ct
+    # the numerical pressure moves the EHL rung by little at this moderate load (p_h 1.9 GPa)
+    hertz, numerical = (by.loc[f"EHL Eyring isothermal, {p} pressure", "efficiency [%]"] for p in ("Hertz", "numerical"))
+    assert abs(hertz - numerical) < 1.0

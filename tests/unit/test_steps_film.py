@@ -298,3 +298,44 @@ def test_ball_cone_films_hamrock_dowson():
         assert out[f"h_c_{side}"] == pytest.approx(h_c, rel=1e-12)
     with pytest.raises(InputError, match="alpha = 0"):
         ball_cone_films(model, Rx, Ry, F, E, 0.146, 0.073, eta, alpha, False, None, "incompressible")
+
+
+def test_ball_cone_films_pass_on_a_converged_numerical_pressure_only():
+    """A numerical point film's solution becomes the side's PressureField (SI: x = X a, p = P p_h, h = H a^2/Rx of
+    the solver's scales); one that did not converge passes None with a ConvergenceWarning naming the fallback."""
+    from types import SimpleNamespace
+
+    from camcontact.contact.spin_traction import PressureField
+    from camcontact.errors import ConvergenceWarning
+    from camcontact.ehl.point_problem import PointEHLProblem
+
+    Rx, Ry, F, E = 5.1e-3, 7e-3, 1254.0, 207e9 / 0.91
+    X = Y = np.linspace(-2.0, 2.0, 9)
+    P = np.clip(1 - X[None, :] ** 2 - Y[:, None] ** 2, 0.0, None) ** 0.5
+    H = np.full(P.shape, 0.3)
+
+    class Numerical:
+        provides = ("h_c", "h_min")
+        name = "numerical stub"
+        converged = True
+
+        def __call__(self, state):
+            scales = PointEHLProblem.scales(Rx, F, E)
+            solution = SimpleNamespace(record=SimpleNamespace(converged=self.converged),
+                                       dimensional=lambda *_: {"x": X * scales["a"], "y": Y * scales["a"],
+                                                               "p": P * scales["p_h"], "h": H * scales["h_scale"]})
+            return {"h_c": 1e-7, "h_min": 8e-8, "ehl_solution": solution}
+
+    model = Numerical()
+    out = ball_cone_films(model, Rx, Ry, F, E, 0.146, 0.073, 0.02, 2.5e-8, True, None, "incompressible")
+    field = out["pressure_field_in"]
+    scales = PointEHLProblem.scales(Rx, F, E)
+    assert isinstance(field, PressureField) and field.p.max() == pytest.approx(scales["p_h"])
+    assert field.h[0, 0] == pytest.approx(0.3 * scales["a"] ** 2 / Rx) and field.x[-1] == pytest.approx(2 * scales["a"])
+    model.converged = False
+    with pytest.warns(ConvergenceWarning, match="falls back to the Hertz pressure"):
+        out = ball_cone_films(model, Rx, Ry, F, E, 0.146, 0.073, 0.02, 2.5e-8, True, None, "incompressible")
+    assert out["pressure_field_in"] is None and out["pressure_field_out"] is None
+    formula = ball_cone_films(registry.get("film_models", "hamrock_dowson"), Rx, Ry, F, E, 0.146, 0.073, 0.02, 2.5e-8,
+                              True, None, "incompressible")
+    assert formula["pressure_field_in"] is None

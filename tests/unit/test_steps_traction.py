@@ -116,8 +116,42 @@ def test_ehl_traction_step_transmits_the_forces_with_spin():
 
 
 def test_efficiency_step():
-    """n (P_in + P_out) lost of the power: 9 x (1 + 2) W of 150 W -> 0.82."""
+    """n (P_in + P_out) lost of the power: 9 x (1 + 2) W of 150 W -> 0.82; NaN in gross slip."""
     from camcontact.steps.traction import ball_cone_efficiency
 
-    out = ball_cone_efficiency(150.0, 9, 1.0, 2.0)
+    out = ball_cone_efficiency(150.0, 9, 1.0, 2.0, False, False)
     assert out == {"power_loss": 27.0, "efficiency": pytest.approx(1 - 27 / 150)}
+    # a contact in gross slip: the drive transmits no power, no efficiency (the gross_slip columns say why)
+    slipping = ball_cone_efficiency(150.0, 9, 1.0, 2.0, False, True)
+    assert math.isnan(slipping["efficiency"]) and math.isnan(slipping["power_loss"])
+
+
+def test_ehl_traction_step_on_a_pressure_field_and_its_fallback():
+    """A pressure field of the same Hertz pressure and film gives the Hertz result (capacity 0.5 %; the creepage 2 %:
+    near the plateau the force is flat in the creepage, so the grid's 0.2 % in force moves it more); a numerical
+    film whose
+    side has no field (its solution did not converge) falls back to the Hertz pressure with traction_valid False."""
+    from camcontact.contact.spin_traction import PressureField
+    from camcontact.models.traction_fluid import EyringTraction
+    from camcontact.models.traction_spin import EhlTraction
+    from camcontact.steps.traction import ball_cone_ehl_traction
+
+    p_h = 1.5 * N / (math.pi * A * B)
+    x, y = np.linspace(-1.1 * A, 1.1 * A, 201), np.linspace(-1.1 * B, 1.1 * B, 201)
+    X, Y = np.meshgrid(x, y)
+    p = p_h * np.sqrt(np.clip(1 - (X / A) ** 2 - (Y / B) ** 2, 0.0, None))
+    field = PressureField(x, y, p, np.full(p.shape, 5e-8))
+    args = dict(traction_model=EhlTraction(), fluid_model=EyringTraction(), a_rolling=A, a_transverse=B, p_h=p_h,
+                h_c_in=5e-8, h_c_out=5e-8, tangential_force_in=20.0, tangential_force_out=40.0, spin_in=100.0,
+                spin_out=50.0, spin=True, rolling_speed_in=1.0, rolling_speed_out=2.0, lubricant_state=_State())
+    hertz = ball_cone_ehl_traction(**args)
+    numerical = ball_cone_ehl_traction(**args, pressure_field_in=field, pressure_field_out=None, numerical_pressure=True)
+    assert numerical["creepage_in"] == pytest.approx(hertz["creepage_in"], rel=2e-2)
+    assert numerical["traction_capacity_in"] == pytest.approx(hertz["traction_capacity_in"], rel=5e-3)
+    assert numerical["traction_valid_in"] and not numerical["traction_valid_out"]
+    assert numerical["creepage_out"] == hertz["creepage_out"]  # the Hertz fallback, flagged
+    # a film that closed (a numerical film that did not converge, h_c <= 0): a clear error naming it
+    from camcontact.errors import InputError
+
+    with pytest.raises(InputError, match="output contact's central film h_c = -1e-08 m"):
+        ball_cone_ehl_traction(**(args | {"h_c_out": -1e-8}))
