@@ -1,9 +1,12 @@
 """Units at the door: the one pint registry, parsing, attrs field helpers and SI views.
 
 camcontact accepts dimensional inputs only as pint Quantities or strings such as
-``"15 mm"`` or ``"85 degC"``. A bare number for a dimensional field, a wrong
-dimension, NaN or infinity raise :class:`~camcontact.errors.InputError` naming the
-class, the field, the value and what is expected. Inside, every component offers a
+``"15 mm"`` or ``"85 degC"`` — a number, then a unit expression (:func:`parse_unit`:
+unit names, products, quotients, brackets and small powers; nothing is evaluated). A
+bare number for a dimensional field, a unit alone, an expression, a wrong dimension,
+NaN or infinity, or an array for a single-valued field raise
+:class:`~camcontact.errors.InputError` naming the class, the field, the value and what
+is allowed; so do :func:`boolean` (True/False only) and :func:`text` (strings). Inside, every component offers a
 cached SI view (:attr:`Component.si`) of plain floats/arrays; no Quantity reaches
 the models or the numba kernels.
 
@@ -34,6 +37,7 @@ __all__ = [
     "Quantity",
     "SIView",
     "above_absolute_zero",
+    "boolean",
     "format_quantity",
     "in_range",
     "instance_of",
@@ -41,9 +45,11 @@ __all__ = [
     "number_field",
     "one_of",
     "parse_quantity",
+    "parse_unit",
     "positive",
     "quantity_field",
     "si_value",
+    "text",
     "to_float",
     "to_quantity",
     "ureg",
@@ -75,7 +81,8 @@ _EXAMPLE_UNITS = {
 }
 
 _NUMBER_THEN_UNIT = re.compile(
-    r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$"
+    r"^\s*([-+]?(?:(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|(?:nan|inf(?:inity)?)(?![A-Za-z])))\s*(.*?)\s*$",
+    re.IGNORECASE,
 )
 
 
@@ -97,21 +104,42 @@ def _example(dimension: str) -> str:
     return f"'1 {unit}'" if unit else "a plain number"
 
 
-def parse_quantity(text: str, *, where: str = "value") -> pint.Quantity:
-    """Parse ``"15 mm"``, ``"85 degC"``, ``"2.2e-8 1/Pa"`` into a Quantity.
+#: the longest unit text read (a unit expression is short; a long one is an attack or a mistake)
+MAX_UNIT_TEXT = 64
+#: the largest |exponent| in a unit expression (m^3, s^-2; no unit has m^1000)
+MAX_UNIT_POWER = 6
+_UNIT_CHARACTERS = re.compile(r"^[A-Za-zµμΩ°%_(][A-Za-z0-9µμΩ°%_ */^().\-·]*$")
+_UNIT_POWER = re.compile(r"(\*\*|\^)\s*\(?\s*([-+]?\d+(?:\.\d+)?)\s*\)?")
 
-    A leading number followed by a unit expression is split first, so offset
-    units (``degC``) work; anything else is handed to pint's parser.
-    """
-    match = _NUMBER_THEN_UNIT.match(text)
+
+def parse_unit(text: str, *, where: str = "value") -> pint.Unit:
+    """A unit expression (``"mm"``, ``"1/GPa"``, ``"W/(m*K)"``, ``"kg/m^3"``) as a pint Unit, or an
+    InputError: letters, products, quotients, brackets and small integer powers only (|power| <= 6), at
+    most 64 characters; no other numbers, so nothing is evaluated."""
+    unit = text.strip()
+    body = re.sub(r"^1\s*/\s*", "", unit)  # "1/Pa"
+    powers = [float(p) for _, p in _UNIT_POWER.findall(body)]
+    bare = _UNIT_POWER.sub("", body)
+    if (len(unit) > MAX_UNIT_TEXT or not _UNIT_CHARACTERS.match(body) or any(ch.isdigit() for ch in bare)
+            or any(abs(p) > MAX_UNIT_POWER for p in powers)):
+        raise InputError(f"{where}: unit {text!r} is not a unit expression; allowed: unit names with *, /, brackets "
+                         f"and powers up to {MAX_UNIT_POWER} (e.g. 'mm', '1/GPa', 'W/(m*K)', 'kg/m^3')")
     try:
-        if match:
-            unit = match.group(2) or "dimensionless"
-            return Q_(float(match.group(1)), unit)
-        return ureg.Quantity(text)
-    except Exception as exc:  # pint's parser raises many kinds (even AssertionError) on odd text
-        reason = str(exc) or type(exc).__name__
-        raise InputError(f"{where} = {text!r}: cannot read this as a quantity ({reason})") from None
+        return ureg.parse_units(unit)
+    except Exception as exc:  # pint raises several kinds on unknown or odd units
+        raise InputError(f"{where}: cannot read the unit {text!r} ({str(exc) or type(exc).__name__})") from None
+
+
+def parse_quantity(text: str, *, where: str = "value") -> pint.Quantity:
+    """Parse ``"15 mm"``, ``"85 degC"``, ``"2.2e-8 1/Pa"`` into a Quantity: a number, then a unit
+    expression (:func:`parse_unit`; none for a plain number). Nothing is evaluated: a unit alone
+    (``"mm"``), an expression (``"(10**400) N"``) or a number in the unit is an InputError."""
+    match = _NUMBER_THEN_UNIT.match(text) if len(text) <= 2 * MAX_UNIT_TEXT else None
+    if match is None:
+        raise InputError(f"{where} = {text!r}: cannot read this as a quantity; allowed: a number then a unit, "
+                         "e.g. '15 mm', '85 degC', '2.2e-8 1/Pa'")
+    unit = match.group(2)
+    return Q_(float(match.group(1)), parse_unit(unit, where=f"{where} = {text!r}") if unit else "dimensionless")
 
 
 def _is_number(value: Any) -> bool:
@@ -131,6 +159,14 @@ def _finite(magnitude: Any) -> bool:
         return bool(np.all(np.isfinite(np.asarray(magnitude, dtype=float))))
     except (TypeError, ValueError):
         return False
+
+
+def _magnitude_of(value: Any, where: str) -> float | np.ndarray:
+    """A number or an array of numbers as floats (an int beyond the float range is an InputError)."""
+    try:
+        return float(value) if np.isscalar(value) else np.asarray(value, dtype=float)
+    except OverflowError:
+        raise InputError(f"{where} = {value!r}: too large for a float (at most about 1.8e308)") from None
 
 
 def to_quantity(value: Any, dimension: str, *, where: str) -> pint.Quantity:
@@ -155,9 +191,9 @@ def to_quantity(value: Any, dimension: str, *, where: str) -> pint.Quantity:
         and isinstance(value[1], str)
         and _is_number(value[0])
     ):
-        quantity = Q_(np.asarray(value[0], dtype=float) if not np.isscalar(value[0]) else value[0], value[1])
+        quantity = Q_(_magnitude_of(value[0], where), parse_unit(value[1], where=f"{where} = {value!r}"))
     elif _is_number(value) and dimension == "[]":
-        quantity = Q_(np.asarray(value, dtype=float) if not np.isscalar(value) else float(value), "")
+        quantity = Q_(_magnitude_of(value, where), "")
     elif _is_number(value):
         raise InputError(
             f"{where} = {value!r}: a bare number is not accepted for a field of dimension "
@@ -188,7 +224,7 @@ def to_float(value: Any, *, where: str) -> float:
         quantity = to_quantity(value, "[]", where=where)
         result = float(quantity.to("").magnitude)
     elif _is_number(value) and np.ndim(value) == 0:
-        result = float(value)
+        result = _magnitude_of(value, where)
     else:
         raise InputError(f"{where} = {value!r}: expected a plain number (dimensionless)")
     if not math.isfinite(result):
@@ -292,10 +328,23 @@ def one_of(*choices: Any):
     """attrs validator: the value is one of ``choices`` (InputError naming field, value, choices)."""
 
     def _validate(instance, attribute, value):
-        if value not in choices:
+        # compared only with choices of its own type: an array or a dict is named, not an ambiguous truth value
+        if not any(type(value) is type(choice) and value == choice for choice in choices):
             raise InputError(f"{_name(instance, attribute)} = {value!r}; allowed: {', '.join(map(repr, choices))}")
 
     return _validate
+
+
+def boolean(instance, attribute, value):
+    """attrs validator: True or False only (a string such as ``"false"`` is not read as a boolean)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise InputError(f"{_name(instance, attribute)} = {value!r}; allowed: true or false (a boolean)")
+
+
+def text(instance, attribute, value):
+    """attrs validator: a string."""
+    if not isinstance(value, str):
+        raise InputError(f"{_name(instance, attribute)} = {value!r}; allowed: a string")
 
 
 def instance_of(cls: type):
@@ -335,18 +384,25 @@ def quantity_field(
     optional: bool = False,
     validators: Iterable = (),
     doc: str = "",
+    array: bool = False,
 ):
     """An attrs field that holds a pint Quantity of ``dimension``.
 
     Accepts Quantities, strings (``"15 mm"``) and ``(magnitude, unit)`` tuples;
     converts once at construction, checks dimension and finiteness, then runs the
-    range ``validators`` (on the SI magnitude). ``optional=True`` admits ``None``.
+    range ``validators`` (on the SI magnitude). ``optional=True`` admits ``None``;
+    ``array=True`` admits a 1-D array of values (otherwise one value only).
     """
 
     def convert(value, where):
         if value is None:
             raise InputError(f"{where} is required (a quantity of dimension {dimension})")
-        return to_quantity(value, dimension, where=where)
+        quantity = to_quantity(value, dimension, where=where)
+        shape = np.shape(quantity.magnitude)
+        if (not array and shape != ()) or (array and len(shape) > 1):
+            raise InputError(f"{where} = {format_quantity(quantity)}: shape {shape}; allowed: "
+                             f"{'a 1-D array of values' if array else 'one value (not an array)'}")
+        return quantity
 
     return _converting_field(
         convert, default=default, optional=optional, validators=validators,

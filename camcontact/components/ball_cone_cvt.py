@@ -15,7 +15,7 @@ import attrs
 from ..errors import InputError
 from ..kinematics.ball_cone import overrange, ratio_of_tilt, tilt_of_ratio
 from ..units import (ANGLE, Component, Quantity, above_absolute_zero, format_quantity, in_range, instance_of,
-                     non_negative, number_field, one_of, positive, quantity_field)
+                     non_negative, number_field, one_of, positive, quantity_field, text)
 from .lubricant import Lubricant
 from .material import Material
 
@@ -27,11 +27,14 @@ __all__ = ["ISO76_BALL_CONTACT_STRESS", "BallConeCVT", "LoadedBallConeCVT"]
 ISO76_BALL_CONTACT_STRESS = "4200 MPa"
 
 _RIGHT = math.pi / 2
+#: the most balls (of the loading cam or between the cones) a design may have
+MAX_COUNT = 1000
 
 
 def _count(instance, attribute, value):
-    if not (isinstance(value, int) and not isinstance(value, bool) and value >= 1):
-        raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}; allowed: an integer >= 1")
+    if not (isinstance(value, int) and not isinstance(value, bool) and 1 <= value <= MAX_COUNT):
+        raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}; allowed: an integer "
+                         f"1 .. {MAX_COUNT}")
 
 
 def _open_angle():
@@ -87,7 +90,7 @@ class BallConeCVT(Component):
     name : str
     """
 
-    name: str = "ball-cone CVT"
+    name: str = attrs.field(default="ball-cone CVT", validator=text)
     cone_angle: Quantity = quantity_field(ANGLE, validators=_open_angle())
     cone_contact_radius: Quantity = quantity_field("[length]", validators=[positive("m")])
     ball_diameter: Quantity = quantity_field("[length]", validators=[positive("m")])
@@ -113,11 +116,13 @@ class BallConeCVT(Component):
                              "must stay below 90 deg (a contact would reach the ball's axis)")
         if self.cone_small_diameter is not None and not si.cone_small_diameter <= 2.0 * si.cone_contact_radius:
             raise InputError(f"{where}: cone_contact_radius = {format_quantity(self.cone_contact_radius)} is inside "
-                             f"the smallest cone diameter {format_quantity(self.cone_small_diameter)}")
+                             f"the smallest cone diameter cone_small_diameter = "
+                             f"{format_quantity(self.cone_small_diameter)}")
         r = 0.5 * si.ball_diameter
         if not self.ball_centre_radius * math.sin(math.pi / self.ball_count) > r:
-            raise InputError(f"{where}: {self.ball_count} balls of {format_quantity(self.ball_diameter)} do not fit "
-                             f"around the cone (ball centres on a {2e3 * self.ball_centre_radius:.4g} mm circle)")
+            raise InputError(f"{where}: ball_count = {self.ball_count} balls of ball_diameter = "
+                             f"{format_quantity(self.ball_diameter)} do not fit around the cone (ball centres on a "
+                             f"{2e3 * self.ball_centre_radius:.4g} mm circle)")
 
     # ------------------------------------------------------------------ derived (SI)
     @property
@@ -193,7 +198,7 @@ class LoadedBallConeCVT(Component):
     name : str
     """
 
-    name: str = "operating point"
+    name: str = attrs.field(default="operating point", validator=text)
     cvt: BallConeCVT = attrs.field(validator=instance_of(BallConeCVT))
     power: Quantity = quantity_field("[power]", validators=[positive("W")])
     input_speed: Quantity = quantity_field("1/[time]", validators=[positive("1/s")])
@@ -201,4 +206,7 @@ class LoadedBallConeCVT(Component):
     temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
 
     def __attrs_post_init__(self) -> None:
-        self.cvt.tilt(self.ratio)  # a ratio beyond the tilt range: InputError naming it
+        try:
+            self.cvt.tilt(self.ratio)
+        except InputError as error:  # a ratio beyond the tilt range
+            raise InputError(f"LoadedBallConeCVT.ratio = {self.ratio!r}: {error}") from None

@@ -14,7 +14,8 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import Component, Quantity, in_range, instance_of, non_negative, number_field, positive, quantity_field
+from ..units import (Component, Quantity, in_range, instance_of, non_negative, number_field, one_of, positive,
+                     quantity_field, text)
 from .material import Material
 
 __all__ = ["STEEL_DENSITY", "Cam", "Follower", "ValveTrain"]
@@ -52,7 +53,7 @@ class Cam(Component):
     name : str
     """
 
-    name: str = "cam"
+    name: str = attrs.field(default="cam", validator=text)
     program: object = attrs.field(validator=_motion_program)
     base_radius: Quantity = quantity_field("[length]", validators=[positive("m")])
     width: Quantity = quantity_field("[length]", validators=[positive("m")])
@@ -94,8 +95,8 @@ class Follower(Component):
     name : str
     """
 
-    name: str = "follower"
-    kind: str = attrs.field(default="roller", validator=attrs.validators.in_(("roller", "flat")))
+    name: str = attrs.field(default="follower", validator=text)
+    kind: str = attrs.field(default="roller", validator=one_of("roller", "flat"))
     material: Material = attrs.field(validator=instance_of(Material))
     roller_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
     offset: Quantity = quantity_field("[length]", default="0 mm")
@@ -182,7 +183,7 @@ class ValveTrain(Component):
     name : str
     """
 
-    name: str = "valve train"
+    name: str = attrs.field(default="valve train", validator=text)
     mass: Quantity = quantity_field("[mass]", validators=[positive("kg")])
     stiffness: Quantity = quantity_field("[force]/[length]", validators=[positive("N/m")])
     preload: Quantity = quantity_field("[force]", default="0 N", validators=[non_negative("N")])
@@ -197,7 +198,8 @@ class ValveTrain(Component):
             from ..dynamics.valve_train_ode import LumpedValveTrain
 
             if not isinstance(self.lumped, LumpedValveTrain):
-                raise InputError(f"ValveTrain {self.name!r}: lumped = {self.lumped!r}; expected a LumpedValveTrain")
+                raise InputError(f"ValveTrain.lumped = {self.lumped!r}; allowed: None or a LumpedValveTrain "
+                                 f"(ValveTrain {self.name!r})")
 
     @property
     def c(self) -> float:

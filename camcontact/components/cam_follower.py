@@ -9,13 +9,17 @@ import numpy as np
 
 from ..errors import InputError
 from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, number_field, positive,
-                     quantity_field)
+                     one_of, quantity_field, text)
 from .cam import Cam, Follower, ValveTrain
 from .lubricant import Lubricant
 
 __all__ = ["CamFollower"]
 
 CONVENTIONS = ("consistent", "thesis")
+#: the most cam angles a report holds (a 0.00036-degree step over a turn): bounded before anything is allocated
+MAX_ANGLES = 1_000_000
+#: the most cam turns of the valve-train dynamics
+MAX_CYCLES = 1000
 
 
 @attrs.frozen(kw_only=True)
@@ -36,7 +40,7 @@ class CamFollower(Component):
     angles : Quantity or str, optional
         Cam angles to report [angle] (an array Quantity); default every ``angle_step`` over a turn.
     angle_step : Quantity or str
-        Default sampling of the cycle [angle] (default 1°).
+        Default sampling of the cycle [angle] (default 1°; 0.00036° .. 180°, at most 10⁶ angles a turn).
     max_speed : Quantity or str, optional
         Highest cam speed the design must run without jump [1/time]; k_min is computed at it
         (Tsuha 2015 §6.1 uses 3000 rpm). Default: ``speed``.
@@ -55,7 +59,7 @@ class CamFollower(Component):
         Archard wear coefficient K for the default wear model ``archard`` (> 0; needs the cam
         material's hardness).
     cycles : int
-        Cam revolutions integrated by the ``dynamics`` effect (the last one is reported; default 3).
+        Cam revolutions integrated by the ``dynamics`` effect (the last one is reported; default 3; 1 .. 1000).
     asperity_density : Quantity or str, optional
         Summit density η of the pair's composite roughness [1/length²] (> 0), for the ``mixed`` effect
         (Greenwood–Tripp); default: η β σ = 0.05 with the composite σ.
@@ -66,41 +70,36 @@ class CamFollower(Component):
     name : str
     """
 
-    name: str = "cam–follower"
+    name: str = attrs.field(default="cam–follower", validator=text)
     cam: Cam = attrs.field(validator=instance_of(Cam))
     follower: Follower = attrs.field(validator=instance_of(Follower))
     valve_train: ValveTrain = attrs.field(validator=instance_of(ValveTrain))
     speed: Quantity = quantity_field("1/[time]", validators=[positive("rad/s")])
     angular_acceleration: Quantity = quantity_field("1/[time]**2", default="0 rad/s**2")
-    angles: Quantity = quantity_field("[angle]", optional=True)
+    angles: Quantity = quantity_field("[angle]", optional=True, array=True)
     angle_step: Quantity = quantity_field(
-        "[angle]", default="1 deg", validators=[in_range(0.0, math.pi, lower_inclusive=False, unit="rad")]
+        "[angle]", default="1 deg", validators=[in_range(2.0 * math.pi / MAX_ANGLES, math.pi, unit="rad")]
     )
     max_speed: Quantity = quantity_field("1/[time]", optional=True, validators=[positive("rad/s")])
     lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Lubricant)))
     temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
-    convention: str = attrs.field(default="consistent")
+    convention: str = attrs.field(default="consistent", validator=one_of(*CONVENTIONS))
     friction_coefficient: float = number_field(optional=True, validators=[in_range(0.0, 1.0)])
     wear_coefficient: float = number_field(optional=True, validators=[in_range(0.0, lower_inclusive=False)])
     cycles: int = attrs.field(default=3)
     asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
     asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
-    @convention.validator
-    def _check_convention(self, attribute, value):
-        if value not in CONVENTIONS:
-            raise InputError(f"CamFollower.convention = {value!r}; allowed: {', '.join(CONVENTIONS)}")
-
     @cycles.validator
     def _check_cycles(self, attribute, value):
-        if not isinstance(value, int) or value < 1:
-            raise InputError(f"CamFollower.cycles = {value!r}; allowed: an integer >= 1")
+        if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= MAX_CYCLES:
+            raise InputError(f"CamFollower.cycles = {value!r}; allowed: an integer 1 .. {MAX_CYCLES}")
 
     def __attrs_post_init__(self) -> None:
         if self.angles is not None:
             theta = np.atleast_1d(self.si.angles)
-            if theta.ndim != 1 or theta.size == 0:
-                raise InputError(f"CamFollower.angles = {self.angles}: give a 1-D array of angles")
+            if theta.ndim != 1 or not 0 < theta.size <= MAX_ANGLES:
+                raise InputError(f"CamFollower.angles = {self.angles}: give a 1-D array of 1 .. {MAX_ANGLES} angles")
 
     @property
     def cam_angles(self) -> np.ndarray:

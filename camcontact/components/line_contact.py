@@ -7,8 +7,8 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, non_negative, number_field,
-                     positive, quantity_field)
+from ..units import (Component, Quantity, above_absolute_zero, boolean, in_range, instance_of, non_negative,
+                     number_field, positive, quantity_field, text)
 from .lubricant import Lubricant
 from .material import Material
 
@@ -34,10 +34,10 @@ class Body(Component):
     name : str
     """
 
-    name: str = "body"
+    name: str = attrs.field(default="body", validator=text)
     material: Material = attrs.field(validator=instance_of(Material))
     radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
-    concave: bool = False
+    concave: bool = attrs.field(default=False, validator=boolean)
     speed: Quantity = quantity_field("[velocity]", default="0 m/s")
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
 
@@ -84,7 +84,7 @@ class LineContact(Component):
     name : str
     """
 
-    name: str = "line contact"
+    name: str = attrs.field(default="line contact", validator=text)
     body1: Body = attrs.field(validator=instance_of(Body))
     body2: Body = attrs.field(validator=instance_of(Body))
     load: Quantity = quantity_field("[force]", optional=True, validators=[positive("N")])

@@ -12,7 +12,7 @@ from __future__ import annotations
 import attrs
 
 from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, non_negative, number_field,
-                     quantity_field)
+                     quantity_field, text)
 from .lubricant import Lubricant
 from .spherical_roller_bearing import SphericalRollerBearing
 
@@ -50,7 +50,7 @@ class LoadedBearing(Component):
     name : str
     """
 
-    name: str = "bearing"
+    name: str = attrs.field(default="bearing", validator=text)
     bearing: SphericalRollerBearing = attrs.field(validator=instance_of(SphericalRollerBearing))
     radial_load: Quantity = quantity_field("[force]", validators=[non_negative("N")])
     axial_load: Quantity = quantity_field("[force]", default="0 N")

@@ -31,24 +31,12 @@ import numpy as np
 import pint
 
 from .. import registry
-from ..errors import InputError
+from ..errors import InputError, UnknownModelError
 from ..models.base import DensityLaw, ViscosityPressureLaw, ViscosityTemperatureLaw
 from ..models.pressure_viscosity_coefficient import gold_alpha
 from ..models.viscosity_pressure import roelands_consistent
-from ..units import (
-    Component,
-    Quantity,
-    above_absolute_zero,
-    format_quantity,
-    in_range,
-    non_negative,
-    number_field,
-    one_of,
-    positive,
-    quantity_field,
-    si_value,
-    to_quantity,
-)
+from ..units import (Component, Quantity, above_absolute_zero, format_quantity, in_range, non_negative, number_field,
+                     one_of, positive, quantity_field, si_value, text, to_quantity)
 
 __all__ = ["Lubricant", "LubricantState"]
 
@@ -61,6 +49,9 @@ def _viscosity_points(value: Any, instance: Any, field: attrs.Attribute) -> tupl
     where = f"{type(instance).__name__}.{field.name}"
     if value is None:
         return ()
+    if isinstance(value, (str, bytes)) or not isinstance(value, (Mapping, list, tuple)):
+        raise InputError(f"{where} = {value!r}; allowed: a mapping {{temperature: viscosity}} or a sequence of "
+                         "(temperature, viscosity) pairs")
     pairs = list(value.items()) if isinstance(value, Mapping) else list(value)
     points = []
     for i, pair in enumerate(pairs):
@@ -202,7 +193,7 @@ class Lubricant(Component):
     0.035835
     """
 
-    name: str = "lubricant"
+    name: str = attrs.field(default="lubricant", validator=text)
     eta0: Quantity = quantity_field("[viscosity]", optional=True, validators=[positive("Pa*s")])
     reference_temperature: Quantity = quantity_field(
         "[temperature]", optional=True, validators=[above_absolute_zero()]
@@ -222,9 +213,9 @@ class Lubricant(Component):
         optional=True, validators=[in_range(0.0, 2.0, lower_inclusive=False)]
     )
     alpha_correlation: str | None = attrs.field(
-        default=None, validator=attrs.validators.optional(attrs.validators.in_(("gold",)))
+        default=None, validator=attrs.validators.optional(one_of("gold"))
     )
-    base_oil: str = attrs.field(default="mineral", validator=attrs.validators.in_(("mineral", "ester")))
+    base_oil: str = attrs.field(default="mineral", validator=one_of("mineral", "ester"))
     viscosity_pressure_law: str = "roelands"
     viscosity_temperature_law: str = "walther"
     density_law: str = "dowson_higginson"
@@ -251,7 +242,7 @@ class Lubricant(Component):
                              "is given with viscosity–temperature data, whose law gives β; drop one of them")
         self._law("viscosity_pressure_law", "pressure")
         self._law("viscosity_temperature_law", "temperature")
-        registry.get_class("density_laws", self.density_law)
+        self._registered("density_law", "density_laws")
         kinematic_data = self.nu40 is not None or bool(
             self.viscosity_data and _is_kinematic(self.viscosity_data[0][1])
         )
@@ -306,9 +297,20 @@ class Lubricant(Component):
                     "viscosity_data or choose 'walther'"
                 )
 
+    def _registered(self, field: str, family: str):
+        """The registered class a law field names, or an InputError naming the field and the laws there are."""
+        name = getattr(self, field)
+        if isinstance(name, str):
+            try:
+                return registry.get_class(family, name)
+            except UnknownModelError:
+                pass
+        raise UnknownModelError(f"Lubricant.{field} = {name!r}: no {family} model of that name; available: "
+                                f"{', '.join(registry.available(family))}")
+
     def _law(self, field: str, kind: str):
         name = getattr(self, field)
-        cls = registry.get_class("viscosity_laws", name)
+        cls = self._registered(field, "viscosity_laws")
         if getattr(cls, "kind", None) != kind:
             options = [n for n in registry.available("viscosity_laws")
                        if getattr(registry.get_class("viscosity_laws", n), "kind", None) == kind]

@@ -6,7 +6,7 @@ import math
 
 import attrs
 
-from ..units import Component, Quantity, in_range, number_field, positive, quantity_field
+from ..units import Component, Quantity, in_range, number_field, positive, quantity_field, text
 
 __all__ = ["Material"]
 
@@ -40,7 +40,7 @@ class Material(Component):
     Material(name='AISI 52100', E=200 GPa, nu=0.3, density=7810 kg/m³, hardness=None, yield_strength=None, tensile_strength=None, thermal_conductivity=None, specific_heat=None)
     """
 
-    name: str = "material"
+    name: str = attrs.field(default="material", validator=text)
     E: Quantity = quantity_field("[pressure]", validators=[positive("Pa")], doc="Young's modulus")
     nu: float = number_field(validators=[in_range(0.0, 0.5, upper_inclusive=False)], doc="Poisson's ratio")
     density: Quantity = quantity_field("[density]", optional=True, validators=[positive("kg/m^3")])

@@ -14,7 +14,7 @@ import attrs
 
 from ..errors import InputError
 from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, non_negative, number_field,
-                     one_of, positive, quantity_field)
+                     one_of, positive, quantity_field, text)
 from .lubricant import Lubricant
 from .material import Material
 
@@ -66,7 +66,7 @@ class RacewayContact(Component):
     name : str
     """
 
-    name: str = "roller / raceway"
+    name: str = attrs.field(default="roller / raceway", validator=text)
     raceway: str = attrs.field(default="outer", validator=one_of("outer", "inner"))
     raceway_radius: Quantity = quantity_field("[length]", validators=[positive("m")])
     roller_radius: Quantity = quantity_field("[length]", validators=[positive("m")])

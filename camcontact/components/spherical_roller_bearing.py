@@ -20,19 +20,21 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import ANGLE, Component, Quantity, in_range, instance_of, non_negative, positive, quantity_field
+from ..units import ANGLE, Component, Quantity, in_range, instance_of, non_negative, positive, quantity_field, text
 from .material import Material
 
 __all__ = ["SphericalRollerBearing"]
 
+#: the most rollers per row a bearing may have
+MAX_ROLLERS = 1000
+
 
 def _count(lower: int, upper: int | None = None):
     def _validate(instance, attribute, value):
-        ok = isinstance(value, int) and not isinstance(value, bool) and value >= lower
-        if ok and upper is not None:
-            ok = value <= upper
+        top = MAX_ROLLERS if upper is None else upper
+        ok = isinstance(value, int) and not isinstance(value, bool) and lower <= value <= top
         if not ok:
-            allowed = f"an integer {lower}..{upper}" if upper is not None else f"an integer >= {lower}"
+            allowed = f"an integer {lower}..{top}"
             raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}; allowed: {allowed}")
 
     return _validate
@@ -41,7 +43,7 @@ def _count(lower: int, upper: int | None = None):
 def _series(instance, attribute, value):
     from ..models.bearing_friction import SKF_SERIES
 
-    if value is not None and value not in SKF_SERIES:
+    if value is not None and not (isinstance(value, str) and value in SKF_SERIES):
         raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}; allowed: {', '.join(SKF_SERIES)} "
                          "(the series of the SKF friction model's geometry constants)")
 
@@ -87,8 +89,8 @@ class SphericalRollerBearing(Component):
     name : str
     """
 
-    name: str = "bearing"
-    designation: str = ""
+    name: str = attrs.field(default="bearing", validator=text)
+    designation: str = attrs.field(default="", validator=text)
     bore: Quantity = quantity_field("[length]", validators=[positive("m")])
     outer_diameter: Quantity = quantity_field("[length]", validators=[positive("m")])
     width: Quantity = quantity_field("[length]", validators=[positive("m")])
@@ -123,8 +125,9 @@ class SphericalRollerBearing(Component):
         if not si.roller_length <= si.width:
             raise InputError(f"{where}: roller_length = {self.roller_length} exceeds the width {self.width}")
         if self.rollers_per_row * si.roller_diameter >= math.pi * d_m:
-            raise InputError(f"{where}: {self.rollers_per_row} rollers of {self.roller_diameter} do not fit on the "
-                             f"pitch circle (pi d_m = {math.pi * d_m * 1e3:.4g} mm)")
+            raise InputError(f"{where}: rollers_per_row = {self.rollers_per_row} rollers of roller_diameter = "
+                             f"{self.roller_diameter} do not fit on the pitch circle (pi d_m = {math.pi * d_m * 1e3:.4g} "
+                             "mm, d_m the pitch_diameter or (bore + outer_diameter)/2)")
 
     # ------------------------------------------------------------------ derived geometry (SI)
     @property

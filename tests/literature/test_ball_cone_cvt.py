@@ -138,7 +138,7 @@ def test_bicycle_load_model_and_cadence_table():
 
 @pytest.mark.parametrize("changes, match", [
     (dict(cone_angle="70 deg"), "cone_angle \\+ tilt_max = 100 deg must stay below 90"),
-    (dict(ball_count=20), "20 balls of 14 mm do not fit"),
+    (dict(ball_count=20), "ball_count = 20 balls of ball_diameter = 14 mm do not fit"),
     (dict(cone_contact_radius="20 mm"), "inside the smallest cone diameter"),
     (dict(traction_coefficient=0.0), "traction_coefficient"),
     (dict(ratio_convention="torque"), "ratio_convention = 'torque'"),

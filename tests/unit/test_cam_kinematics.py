@@ -127,7 +127,7 @@ def test_pressure_angle_over_the_limit_warns_with_the_angle():
 @pytest.mark.parametrize("changes, pattern", [
     ({"speed": "1000"}, r"CamFollower.speed = 1000.*expected 1/\[time\]"),
     ({"speed": "-5 rpm"}, "CamFollower.speed"),
-    ({"convention": "tsuha"}, "allowed: consistent, thesis"),
+    ({"convention": "tsuha"}, "CamFollower.convention = 'tsuha'; allowed: 'consistent', 'thesis'"),
     ({"angle_step": "0 deg"}, "CamFollower.angle_step"),
     ({"angles": "30"}, "angle needs its unit"),
 ])
