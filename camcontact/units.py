@@ -329,7 +329,7 @@ def one_of(*choices: Any):
 
     def _validate(instance, attribute, value):
         # compared only with choices of its own type: an array or a dict is named, not an ambiguous truth value
-        if not any(type(value) is type(choice) and value == choice for choice in choices):
+        if not any(isinstance(value, type(choice)) and value == choice for choice in choices):
             raise InputError(f"{_name(instance, attribute)} = {value!r}; allowed: {', '.join(map(repr, choices))}")
 
     return _validate
