@@ -139,6 +139,7 @@ __all__ = [
     "PressureProfile",
     "TractionThermal",
     "asinh_exp",
+    "check_film_law",
     "film_shear_stress",
     "fluid_traction",
     "traction_coefficient",
@@ -176,6 +177,18 @@ def _finite(name: str, value, *, low: float | None = None, low_inclusive: bool =
         if np.any(bad):
             raise InputError(f"fluid traction: {name} = {float(array[bad].flat[0]):.6g}; allowed: {allowed}")
     return array
+
+
+def check_film_law(where: str, rheology: str, log_viscosity_ratio, thermal) -> None:
+    """InputError (prefixed ``where``) unless the film's shear law is usable: ``rheology`` one of
+    :data:`RHEOLOGIES`, ``log_viscosity_ratio`` a callable, ``thermal`` None or a :class:`TractionThermal`."""
+    if rheology not in RHEOLOGIES:
+        raise InputError(f"{where}: rheology = {rheology!r}; allowed: {', '.join(map(repr, RHEOLOGIES))}")
+    if not callable(log_viscosity_ratio):
+        raise InputError(f"{where}: log_viscosity_ratio = {log_viscosity_ratio!r}; allowed: a callable of the gauge "
+                         "pressure [Pa] giving ln(eta/eta0) (e.g. LubricantState.log_viscosity_ratio)")
+    if thermal is not None and not isinstance(thermal, TractionThermal):
+        raise InputError(f"{where}: thermal = {thermal!r}; allowed: None or a TractionThermal")
 
 
 @attrs.frozen
@@ -404,17 +417,11 @@ class FluidTractionContact:
                  eyring_stress=None, limiting_shear_stress=0.0, limiting_shear_slope=None, geometry: str = "line",
                  entrainment_speed=None, half_width=None, thermal: TractionThermal | None = None,
                  n_nodes: int = DEFAULT_NODES, profile: PressureProfile | None = None):
-        if rheology not in RHEOLOGIES:
-            raise InputError(f"fluid traction: rheology = {rheology!r}; allowed: {', '.join(map(repr, RHEOLOGIES))}")
+        check_film_law("fluid traction", rheology, log_viscosity_ratio, thermal)
         if geometry not in GEOMETRIES:
             raise InputError(f"fluid traction: geometry = {geometry!r}; allowed: {', '.join(map(repr, GEOMETRIES))}")
         if isinstance(n_nodes, bool) or not isinstance(n_nodes, (int, np.integer)) or not 4 <= n_nodes <= 256:
             raise InputError(f"fluid traction: n_nodes = {n_nodes!r}; allowed: an integer, 4 <= n_nodes <= 256")
-        if not callable(log_viscosity_ratio):
-            raise InputError(f"fluid traction: log_viscosity_ratio = {log_viscosity_ratio!r}; allowed: a callable "
-                             "of the gauge pressure [Pa] giving ln(eta/eta0) (e.g. LubricantState.log_viscosity_ratio)")
-        if thermal is not None and not isinstance(thermal, TractionThermal):
-            raise InputError(f"fluid traction: thermal = {thermal!r}; allowed: None or a TractionThermal")
         if profile is not None:
             if not isinstance(profile, PressureProfile):
                 raise InputError(f"fluid traction: profile = {type(profile).__name__}; allowed: None or a "

@@ -74,7 +74,8 @@ from scipy.optimize import brentq, minimize_scalar
 
 from ..errors import InputError
 from .contact_temperature import band_flash_per_flux
-from .fluid_traction import BAND_MEAN_OVER_MAX, POINT_FLASH_FACTOR, RHEOLOGIES, TractionThermal, film_shear_stress
+from .fluid_traction import (BAND_MEAN_OVER_MAX, POINT_FLASH_FACTOR, TractionThermal, check_film_law,
+                             film_shear_stress)
 
 __all__ = ["DEFAULT_MAX_CREEPAGE", "CentreLineTraction", "PressureField", "SpinTraction", "SpinTractionContact",
            "TractionMap", "rolling_losses"]
@@ -248,16 +249,10 @@ class SpinTractionContact:
                  rheology: str = "eyring", eyring_stress=None, limiting_shear_stress=0.0, limiting_shear_slope=None,
                  thermal: TractionThermal | None = None, n_radial: int = DEFAULT_RADIAL,
                  n_angular: int = DEFAULT_ANGULAR, field: PressureField | None = None):
-        if rheology not in RHEOLOGIES:
-            raise InputError(f"spin traction: rheology = {rheology!r}; allowed: {', '.join(map(repr, RHEOLOGIES))}")
+        check_film_law("spin traction", rheology, log_viscosity_ratio, thermal)
         for name, value, low in (("n_radial", n_radial, 4), ("n_angular", n_angular, 8)):
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not low <= value <= 1024:
                 raise InputError(f"spin traction: {name} = {value!r}; allowed: an integer, {low} <= n <= 1024")
-        if not callable(log_viscosity_ratio):
-            raise InputError(f"spin traction: log_viscosity_ratio = {log_viscosity_ratio!r}; allowed: a callable "
-                             "of the gauge pressure [Pa] giving ln(eta/eta0)")
-        if thermal is not None and not isinstance(thermal, TractionThermal):
-            raise InputError(f"spin traction: thermal = {thermal!r}; allowed: None or a TractionThermal")
         if field is not None and not isinstance(field, PressureField):
             raise InputError(f"spin traction: field = {type(field).__name__}; allowed: None or a PressureField")
         self.a, self.b = _number("a", a, low=0.0, low_inclusive=False), _number("b", b, low=0.0, low_inclusive=False)
@@ -393,9 +388,8 @@ class SpinTractionContact:
             stride = max(1, math.ceil(x.size / (n * n)))
             x, y, pressure, film = x[::stride], y[::stride], pressure[::stride], film[::stride]
         tx, ty, limited = self._traction_at(state, x, y, pressure, film)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            pole = ((-state.creepage_y / state.spin, state.creepage_x / state.spin) if state.spin != 0.0
-                    else (math.inf, math.inf))
+        pole = ((-state.creepage_y / state.spin, state.creepage_x / state.spin) if state.spin != 0.0
+                else (math.inf, math.inf))
         return TractionMap(x, y, tx, ty, limited, self.a, self.b, pole)
 
     # ------------------------------------------------------------------ force control

@@ -14,6 +14,12 @@ SECONDS_PER_HOUR = 3600.0
 TRACKS = ("life_cone_in", "life_ball_in", "life_ball_out", "life_cone_out", "life_system")
 
 
+def _outline(ax, a, b):
+    """The Hertz ellipse of semi-axes a (rolling, vertical) and b (across, horizontal), in the map's units."""
+    t = np.linspace(0, 2 * np.pi, 200)
+    ax.plot(b * np.cos(t), a * np.sin(t), "k-", lw=0.8)
+
+
 def _contact_map(ax, row, side, result):
     """FASTSIM again at the solved creepage (57 us): stick (light) and slip (dark) elements, traction arrows."""
     from ..contact.fastsim import fastsim
@@ -33,8 +39,7 @@ def _contact_map(ax, row, side, result):
                cmap="RdYlBu", vmin=0, vmax=1, s=12, marker="s")
     arrows = ax.quiver(y * scale, field.x * scale, field.Ty, field.Tx, angles="xy", color="k", width=0.004)
     _arrow_key(ax, arrows, np.hypot(field.Tx, field.Ty))
-    t = np.linspace(0, 2 * np.pi, 200)
-    ax.plot(row["a_transverse"] * scale * np.cos(t), row["a_rolling"] * scale * np.sin(t), "k-", lw=0.8)
+    _outline(ax, row["a_rolling"] * scale, row["a_transverse"] * scale)
     ax.set_aspect("equal")
     ax.set(xlabel="y (across rolling) [mm]", ylabel="x (rolling) [mm]",
            title=f"FASTSIM, {side}put contact ({row[f'traction_regime_{side}']})\n"
@@ -84,8 +89,7 @@ def _ehl_map(ax, row, side, result):
         handles += ax.plot(pole_y * scale, pole_x * scale, "+", color="magenta", ms=12, mew=2, label="slip pole")
     if handles:
         ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(0.0, -0.16), frameon=False)
-    t = np.linspace(0, 2 * np.pi, 200)
-    ax.plot(field.b * scale * np.cos(t), field.a * scale * np.sin(t), "k-", lw=0.8)
+    _outline(ax, field.a * scale, field.b * scale)
     ax.set_aspect("equal")
     ax.set(xlabel="y (across rolling) [mm]", ylabel="x (rolling, leading edge up) [mm]",
            title=f"EHL traction, {side}put contact ({row[f'traction_regime_{side}']})\n"
