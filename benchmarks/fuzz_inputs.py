@@ -16,6 +16,13 @@ files, and every component inside them) to one value with ``attrs.evolve`` and c
 ``hang``
     the probe ran past its time bound (``--timeout``, default 2 s; SIGALRM).
 
+With ``--reports`` every *accepted* probe of a field of a scene (the line contact, raceway, bearing and
+CVT scenes of the tutorials, through their nested components) is also run by an Analysis, and its report
+is checked: every NaN or infinite number must have its reason beside it
+(:func:`camcontact.report.unexplained_values`); outcomes ``reported`` (clean), ``unflagged``, ``leak``
+(an exception out of ``run()``, which isolates step failures) and ``hang``. The cam scene is left out
+for its cost (a second per run); its failure isolation is tested on its own.
+
 The values are a fixed corpus of known-bad inputs (units alone, expressions, huge powers, arrays for
 scalars, strings for booleans, wrong types, NaN/inf, out-of-range numbers) and, with hypothesis, drawn
 text, numbers, units and containers. A hypothesis property test (tests/unit/test_fuzz_inputs.py) runs a
@@ -23,6 +30,8 @@ bounded number of probes in CI; this script runs the long version and prints its
 
     python benchmarks/fuzz_inputs.py                 # corpus x every field + 5000 hypothesis probes
     python benchmarks/fuzz_inputs.py --quick         # corpus only
+    python benchmarks/fuzz_inputs.py --reports       # and run the accepted probes of the scenes (corpus and
+                                                     # as many hypothesis probes), checking their reports
 """
 
 from __future__ import annotations
@@ -110,6 +119,106 @@ def probe(component: Any, field: str, value: Any, timeout: float) -> tuple[str, 
         signal.signal(signal.SIGALRM, previous)
 
 
+REPORT_SCENES = ("pellet_mill_line_contact.toml", "pellet_mill_raceway_contact.toml", "pellet_mill_bearing.toml",
+                 "forti_ball_cone_cvt.toml")
+REPORT_OUTCOMES = ("reported", "unflagged", "leak", "hang")
+
+
+def scene_paths(component: Any, prefix: str = "") -> Iterator[str]:
+    """Dotted paths of every field of a scene component and of the components inside it."""
+    for field in attrs.fields(type(component)):
+        if not field.init:
+            continue
+        path = prefix + field.name
+        yield path
+        value = getattr(component, field.name)
+        if attrs.has(type(value)) and type(value).__module__.startswith("camcontact.components"):
+            yield from scene_paths(value, path + ".")
+
+
+def report_probe(scene: Any, path: str, value: Any, timeout: float) -> tuple[str, str]:
+    """(outcome, message) of running the scene with ``value`` at ``path`` (None when the value is refused at
+    the door: the corpus probes count those) and checking its report for unexplained NaN/inf."""
+    import warnings
+
+    from camcontact import Analysis
+    from camcontact.errors import InputError
+    from camcontact.report import unexplained_values
+    from camcontact.sweep_cases import evolve_path
+
+    try:
+        case = evolve_path(scene, path, value)
+    except Exception:  # noqa: BLE001 — refused at the door: the corpus probes classify it
+        return "refused", ""
+
+    def alarm(signum, frame):
+        raise ProbeTimeout
+
+    previous = signal.signal(signal.SIGALRM, alarm)
+    signal.setitimer(signal.ITIMER_REAL, timeout)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            result = Analysis(case).run()
+            frames = [result.to_frame()] + ([result.summary_frame()] if result.index is not None else [])
+        bad = [f"{column} row {row}" for frame in frames for row, column in unexplained_values(frame)]
+        return ("unflagged", "; ".join(bad[:4])) if bad else ("reported", "")
+    except ProbeTimeout:
+        return "hang", f"over {timeout} s"
+    except InputError as error:  # the scene refused it when planning (outputs it cannot give, a missing input)
+        return "reported", f"refused when planned: {error}"
+    except Exception as error:  # noqa: BLE001 — what the fuzz looks for
+        return "leak", f"{type(error).__name__}: {error}"
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0.0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+def report_counts(values: list[Any], timeout: float, scenes=REPORT_SCENES) -> tuple[collections.Counter, list]:
+    """Every value at every path of the report scenes; the accepted ones run and checked."""
+    from camcontact.scene_file import load_scene
+
+    counts: collections.Counter = collections.Counter()
+    bad = []
+    for name in scenes:
+        scene = load_scene(ROOT / "tutorials" / name).component
+        for path in scene_paths(scene):
+            for value in values:
+                outcome, message = report_probe(scene, path, value, timeout)
+                if outcome == "refused":
+                    continue
+                counts[outcome] += 1
+                if outcome != "reported":
+                    bad.append((outcome, f"{name}:{path}", repr(value)[:60], message[:200]))
+    return counts, bad
+
+
+def report_hypothesis_counts(probes: int, timeout: float, seed: int = 0, scenes=REPORT_SCENES):
+    """``probes`` hypothesis probes (scene, path, drawn value); the accepted ones run and checked."""
+    from hypothesis import HealthCheck, given, seed as fix_seed, settings
+    from hypothesis import strategies as st
+
+    from camcontact.scene_file import load_scene
+
+    loaded = {name: load_scene(ROOT / "tutorials" / name).component for name in scenes}
+    targets = [(name, path) for name, scene in loaded.items() for path in scene_paths(scene)]
+    counts: collections.Counter = collections.Counter()
+    bad: list[tuple] = []
+
+    @fix_seed(seed)
+    @settings(max_examples=probes, deadline=None, database=None, suppress_health_check=list(HealthCheck))
+    @given(st.sampled_from(targets), values())
+    def run_one(target, value):
+        name, path = target
+        outcome, message = report_probe(loaded[name], path, value, timeout)
+        counts[outcome] += 1
+        if outcome not in ("reported", "refused"):
+            bad.append((outcome, f"{name}:{path}", repr(value)[:60], message[:200]))
+
+    run_one()
+    return counts, bad
+
+
 def fields_of(instance: Any) -> list[str]:
     return [f.name for f in attrs.fields(type(instance)) if f.init]
 
@@ -183,6 +292,9 @@ def main(argv: list[str] | None = None):
     parser.add_argument("--show", type=int, default=40, help="failures to print")
     parser.add_argument("--probes", type=int, default=5000, help="hypothesis probes (beyond the corpus)")
     parser.add_argument("--seed", type=int, default=0, help="hypothesis seed")
+    parser.add_argument("--reports", action="store_true",
+                        help="also run the accepted corpus probes of the scenes and check their reports")
+    parser.add_argument("--report-timeout", type=float, default=60.0, help="time bound of one scene run [s]")
     args = parser.parse_args(argv)
     found = components()
     counts, bad = run(corpus_probes(found), found, args.timeout)
@@ -193,6 +305,17 @@ def main(argv: list[str] | None = None):
     print(f"{sum(counts.values())} probes over {len(found)} components "
           f"({sum(len(fields_of(i)) for i in found.values())} fields): "
           + ", ".join(f"{k} {counts[k]}" for k in OUTCOMES))
+    if args.reports:
+        ran, unflagged = report_counts(corpus(), args.report_timeout)
+        print(f"{sum(ran.values())} accepted corpus probes run as scenes: "
+              + ", ".join(f"{k} {ran[k]}" for k in REPORT_OUTCOMES))
+        counts, bad = counts + ran, bad + unflagged
+        if not args.quick:
+            drawn, more = report_hypothesis_counts(args.probes, args.report_timeout, args.seed)
+            print(f"{sum(drawn.values())} hypothesis probes of the scenes' fields ({drawn['refused']} refused at the "
+                  f"door): " + ", ".join(f"{k} {drawn[k]}" for k in REPORT_OUTCOMES))
+            drawn.pop("refused", None)
+            counts, bad = counts + drawn, bad + more
     for row in bad[:args.show]:
         print("  ", *row)
     return counts, bad

@@ -30,18 +30,21 @@ Examples
 
 from __future__ import annotations
 
+import functools
 import itertools
 import time
+import warnings
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 import attrs
 import numpy as np
 
-from .errors import InputError
-from .models.base import Model
+from . import registry
+from .errors import CaseTimeout, InputError, PluginError, StepFailureWarning
+from .models.base import Model, is_builtin
 from .quantities import QUANTITIES
-from .step_graph import EFFECTS, SceneGraph, Step, StepRecord, builder_for
+from .step_graph import EFFECTS, SceneGraph, Step, StepFailure, StepRecord, builder_for
 
 __all__ = ["Analysis", "Result"]
 
@@ -79,6 +82,23 @@ def input_token(value: Any) -> Any:
     return ("id", id(value))
 
 
+def foreign_models(step: Step, inputs: Mapping[str, Any]) -> list[Model]:
+    """The models a step reads from the graph inputs that are not built in (plugins, the user's own
+    classes and functions): those named when the step fails."""
+    return [value for name in step.requires if isinstance(value := inputs.get(name), Model)
+            and not is_builtin(type(value))]
+
+
+def describe_model(model: Model) -> str:
+    """``"plugin 'broken' (film_models) from camcontact-broken 0.1"``, or for a model given in code
+    ``"model 'mine' (film_models, my_module.MyFilm)"``."""
+    info = registry.origin(model)
+    if info is not None:
+        return f"plugin {info.name!r} ({info.family}) from {info.source}"
+    cls = type(model)
+    return f"model {model.name!r} ({model.family}, {cls.__module__}.{cls.__qualname__})"
+
+
 # ----------------------------------------------------------------------------- analysis
 class Analysis:
     """Run a scene: see the module docstring.
@@ -94,6 +114,10 @@ class Analysis:
         Model per slot (e.g. ``{"film": "moes"}``); a list makes one variant per entry.
     effects : iterable of str, optional
         Physical effects switched on (default: the scene's defaults).
+    strict : bool
+        False (default): a step that fails leaves NaN in its own outputs with the reason
+        (:attr:`Result.failures`, the report's ``failed`` and ``error`` columns) and the others run;
+        True: the first failure raises.
     """
 
     def __init__(
@@ -103,8 +127,12 @@ class Analysis:
         outputs: Sequence[str] | None = None,
         models: Mapping[str, Any] | None = None,
         effects: Iterable[str] | None = None,
+        strict: bool = False,
     ):
         self.scene = scene
+        if not isinstance(strict, (bool, np.bool_)):
+            raise InputError(f"Analysis.strict = {strict!r}; allowed: True or False")
+        self.strict = bool(strict)
         self._builder = builder_for(scene)
         self.models = dict(models or {})
         self.effects = None if effects is None else frozenset(effects)
@@ -237,27 +265,34 @@ class Analysis:
 
     # --------------------------------------------------------------- running
     def run(self) -> Result:
-        """Run the planned steps of every variant and return a :class:`Result`."""
-        cache: dict[int, Mapping[str, Any]] = {}
+        """Run the planned steps of every variant and return a :class:`Result`.
+
+        A step that raises (without ``strict``) gives no outputs: they are NaN (None) in the result,
+        the steps that need them are skipped, every other step runs, a
+        :class:`~camcontact.errors.StepFailureWarning` says so and :attr:`Result.failures` (and the
+        report's ``failed``/``error`` columns) say why. With ``strict=True`` the first failure raises;
+        a failure inside a model that is not built in is a :class:`~camcontact.errors.PluginError`
+        naming the model, its distribution and the step.
+        """
+        cache: dict[int, tuple[Mapping[str, Any], StepFailure | None]] = {}
         rows: list[dict[str, Any]] = []
         records: list[StepRecord] = []
+        failures: list[StepFailure] = []
         outputs_union: list[str] = []
         graph = None
         for label, _ in self.variants:
             graph, outputs, order = self.plans[label]
             state: dict[str, Any] = dict(graph.inputs)
+            failed_by: dict[str, str] = {}  # output name -> the step that could not give it
             for step, key, (model, version) in order:
                 if key not in cache:
-                    start = time.perf_counter()
-                    produced = dict(step.run(state))
-                    elapsed = time.perf_counter() - start
-                    missing = [p for p in step.provides if p not in produced]
-                    if missing:
-                        raise RuntimeError(f"step {step.name!r} did not provide {missing}")
-                    cache[key] = produced
-                    records.append(StepRecord(step.name, model, version, label, elapsed))
-                state.update(cache[key])
-            row = {name: state[name] for name in outputs}
+                    cache[key] = self._run_step(step, model, version, label, graph, state, failed_by, records)
+                produced, failure = cache[key]
+                if failure is not None:
+                    failures.append(attrs.evolve(failure, variant=label))
+                    failed_by.update((name, step.name) for name in step.provides)
+                state.update(produced)
+            row = {name: state.get(name) for name in outputs}
             if graph.index is not None:
                 row[graph.index] = state[graph.index]
             rows.append(row)
@@ -278,16 +313,61 @@ class Analysis:
             index=graph.index if graph else None,
             per_index=graph.per_index if graph else frozenset(),
             variant_models=tuple(dict(models) for _, models in self.variants),
+            failures=tuple(failures),
         )
 
+    def _run_step(self, step: Step, model: str, version: str, variant: str, graph: SceneGraph,
+                  state: Mapping[str, Any], failed_by: Mapping[str, str],
+                  records: list[StepRecord]) -> tuple[dict[str, Any], StepFailure | None]:
+        """One step: (its outputs, None), or ({}, the failure) when it raised or needs a failed output."""
+        needed = [name for name in step.requires if name in failed_by]
+        if needed:
+            steps = ", ".join(dict.fromkeys(repr(failed_by[name]) for name in needed))
+            reason = f"not run: needs {', '.join(needed)}, which step {steps} could not give"
+            return {}, StepFailure(step.name, model, variant, step.provides, reason, skipped=True)
+        foreign = foreign_models(step, graph.inputs)
+        start = time.perf_counter()
+        try:
+            produced = dict(step.run(state))
+            missing = [p for p in step.provides if p not in produced]
+            if missing:
+                raise RuntimeError(f"step {step.name!r} did not provide {missing}")
+        except CaseTimeout:  # a sweep's bound on the whole case, not this step's failure
+            raise
+        except Exception as exc:
+            elapsed = time.perf_counter() - start
+            source = "; ".join(describe_model(m) for m in foreign)
+            reason = f"{type(exc).__name__}: {exc}"
+            if foreign:
+                reason = f"{source} failed: {reason}"
+            if self.strict:
+                if foreign:
+                    raise PluginError(f"{reason} (step {step.name!r})", model=model, source=source,
+                                      step=step.name) from exc
+                raise
+            failure = StepFailure(step.name, model, variant, step.provides, reason, source=source)
+            records.append(StepRecord(step.name, model, version, variant, elapsed, error=reason))
+            outputs = ", ".join(step.provides) if len(step.provides) <= 6 else f"{len(step.provides)} outputs"
+            warnings.warn(f"{failure.describe()}; its outputs ({outputs}) are NaN and the other steps ran "
+                          "(strict=True raises)", StepFailureWarning, stacklevel=3)
+            return {}, failure
+        records.append(StepRecord(step.name, model, version, variant, time.perf_counter() - start))
+        return produced, None
+
     def sweep(self, grid: Any, *, executor: Any = None, progress: bool | None = None, errors: str = "record",
-              table: str = "auto", units: Mapping[str, str] | None = None, chunksize: int | None = None):
+              table: str = "auto", units: Mapping[str, str] | None = None, chunksize: int | None = None,
+              timeout: float | None = None, stream: Any = None, resume: bool = False):
         """This analysis over many cases: one tidy pandas DataFrame (see :mod:`camcontact.sweep_cases`).
 
         ``grid`` maps field paths of the scene (``"speed"``, ``"cam.base_radius"``) to values (the
         cartesian product is swept) or is a DataFrame of cases; ``executor`` is any
         ``concurrent.futures.Executor`` (None: serial here; a process pool; a Dask client's
-        ``get_executor()``); failing cases keep their parameters and the error in the table.
+        ``get_executor()``); failing cases keep their parameters and the error in the table, a case
+        with a failed step its ``failed``/``error`` cells. ``timeout`` [s] bounds each case; ``stream``
+        (a .csv path) gets every case as it finishes, and ``resume=True`` runs only the cases not yet
+        in it; an interrupted sweep (Ctrl-C, a killed worker) returns the finished cases, with the
+        missing ones in ``frame.attrs["missing_cases"]``. ``errors="raise"`` runs the cases strictly
+        (the first failing step raises, with its own exception type).
 
         >>> import camcontact as cc
         >>> steel = cc.Material(E="210 GPa", nu=0.3)
@@ -295,13 +375,14 @@ class Analysis:
         ...                          body2=cc.Body(material=steel, radius="10 mm"), load="1 kN", length="10 mm")
         >>> frame = cc.Analysis(contact, outputs=["p_h"]).sweep({"load": ["1 kN", "4 kN"]}, progress=False)
         >>> list(frame.columns), round(float(frame["p_h [MPa]"][1] / frame["p_h [MPa]"][0]), 6)
-        (['load [kN]', 'p_h [MPa]', 'error'], 2.0)
+        (['case', 'load [kN]', 'p_h [MPa]', 'error'], 2.0)
         """
         from .sweep_cases import run_sweep
 
-        return run_sweep(type(self), self.scene, grid, outputs=self.requested, models=self.models, effects=self.effects,
+        runner = functools.partial(type(self), strict=True) if self.strict or errors == "raise" else type(self)
+        return run_sweep(runner, self.scene, grid, outputs=self.requested, models=self.models, effects=self.effects,
                          executor=executor, progress=progress, errors=errors, table=table, units=units,
-                         chunksize=chunksize)
+                         chunksize=chunksize, timeout=timeout, stream=stream, resume=resume)
 
     def steps(self, variant: str | None = None) -> list[str]:
         """Names of the steps that :meth:`run` will execute (for the first or a given variant)."""
@@ -325,6 +406,8 @@ class Result:
     per_index: frozenset = frozenset()  #: outputs that are arrays over ``index``
     #: the models of each variant (slot -> model, as given), for plots that evaluate more of a variant
     variant_models: tuple[Mapping[str, Any], ...] = attrs.field(default=(), repr=False, eq=False)
+    #: the steps that gave no outputs (``strict=False``), per variant, with the reason
+    failures: tuple[StepFailure, ...] = ()
 
     def __getitem__(self, name: str) -> Any:
         """SI value of ``name`` (a list with one entry per variant when there are several)."""

@@ -21,10 +21,31 @@ class QuantitySpec:
     si_unit: str  #: pint unit of the SI value held inside ("" = dimensionless, None = text)
     display_unit: str  #: unit of the report column by default
     description: str
+    #: the status cells that say why a value is NaN by design: (output, value) pairs, any of which in the
+    #: same report row explains it (an unloaded roller has no Hertz width; a drive in gross slip no efficiency)
+    nan_when: tuple[tuple[str, object], ...] = ()
 
 
 def _q(name: str, si_unit: str | None, display_unit: str | None, description: str) -> QuantitySpec:
     return QuantitySpec(name, si_unit, display_unit if display_unit is not None else si_unit, description)
+
+
+#: NaN by design, with the status that says so beside it
+_UNLOADED = (("loaded", False), ("contact_regime", "unloaded"))
+_NAN_WHEN = {
+    **{f"{q}_{race}": _UNLOADED for q in ("b", "p_h", "h_c", "h_min", "Lambda", "flash_temperature",
+                                          "rolling_resistance") for race in ("inner", "outer")},
+    # a cam follower that has left the cam (contact_open) has no contact, so no film
+    **{q: (("contact_open", True),) for q in ("h_c", "h_min", "Lambda_c", "Lambda_min", "h_c_isothermal",
+                                              "h_min_isothermal")},
+    "spike_pressure": (("pressure_spike", False),),
+    "friction_coefficient": (("friction_valid", False),),
+    "friction_coefficient_inner": (("friction_valid_inner", False),),
+    "friction_coefficient_outer": (("friction_valid_outer", False),),
+    **{f"traction_margin_{side}": ((f"gross_slip_{side}", True),) for side in ("in", "out")},
+    "efficiency": (("gross_slip_in", True), ("gross_slip_out", True)),
+    "power_loss": (("gross_slip_in", True), ("gross_slip_out", True)),
+}
 
 
 QUANTITIES: dict[str, QuantitySpec] = {
@@ -53,6 +74,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("tau_xz_range", "Pa", "MPa", "orthogonal shear range 2 tau_0 (fatigue amplitude)"),
         _q("temperature", "K", "degC", "lubricant (inlet) temperature"),
         _q("eta0", "Pa*s", "mPa*s", "dynamic viscosity at ambient pressure"),
+        _q("viscosity_extrapolated", None, None, "the temperature lies outside the lubricant's viscosity data "
+           "(the viscosity-temperature law is extrapolated)"),
         _q("kinematic_viscosity", "m^2/s", "cSt", "kinematic viscosity at ambient pressure"),
         _q("alpha", "1/Pa", "1/GPa", "pressure-viscosity coefficient"),
         _q("roelands_z", "", "", "Roelands pressure-viscosity index"),
@@ -101,6 +124,7 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("H_min", "", "", "minimum film H_min = h_min R / b^2 of the numerical solution"),
         _q("H_c", "", "", "central film H_c = h_c R / b^2 of the numerical solution"),
         _q("spike_pressure", "", "", "pressure spike height P_s = p_s / p_h of the numerical solution (NaN: no distinct spike)"),
+        _q("pressure_spike", None, None, "True where the numerical solution has a distinct pressure spike"),
         _q("friction_force", "N", "N", "friction force at the contact"),
         _q("friction_coefficient", "", "", "friction force / normal force"),
         _q("friction_power", "W", "W", "friction power loss"),
@@ -151,6 +175,7 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("roller_row", "", "", "row of the roller (1 or 2)"),
         _q("azimuth", "rad", "deg", "roller azimuth from the line of the radial load"),
         _q("Q", "N", "kN", "roller load (inner and outer contact)"),
+        _q("loaded", None, None, "True for a roller in contact (Q > 0)"),
         _q("roller_approach", "m", "um", "elastic approach of the roller's contacts (negative: gap)"),
         _q("Q_max", "N", "kN", "largest roller load"),
         _q("loaded_rollers", "", "", "number of rollers in contact"),
@@ -288,6 +313,9 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("fatigue_check", None, None, "fatigue check of the orthogonal shear range (thesis rule)"),
     )
 }
+
+
+QUANTITIES.update({name: attrs.evolve(QUANTITIES[name], nan_when=reasons) for name, reasons in _NAN_WHEN.items()})
 
 
 def spec(name: str) -> QuantitySpec:

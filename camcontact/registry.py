@@ -8,10 +8,15 @@
   marked classes they define, so ``import camcontact`` loads no model and compiles nothing
   (and the models do not import the registry).
 * Third-party plugins are discovered lazily, per family, on first lookup, through
-  :func:`importlib.metadata.entry_points`. A plugin that fails to import or does not
-  fit its family gives a :class:`~camcontact.errors.PluginLoadWarning` and is listed as
-  failed; the others are unaffected. A plugin whose name clashes with a built-in gives
-  a :class:`~camcontact.errors.PluginNameClashWarning` and the built-in wins.
+  :func:`importlib.metadata.entry_points`, and reached by their *entry-point name* (the
+  model's own ``name`` labels its results). A plugin that fails to import — whatever it
+  raises, ``SystemExit`` and ``KeyboardInterrupt`` included (the user's own Ctrl-C while it
+  loads is re-raised) — or does not fit its family gives a
+  :class:`~camcontact.errors.PluginLoadWarning` and is listed as failed; the others are
+  unaffected. A plugin whose name clashes with a built-in gives a
+  :class:`~camcontact.errors.PluginNameClashWarning` and the built-in wins.
+* :func:`origin` says where a model object comes from (a plugin's distribution), so that an
+  analysis names the plugin and its distribution when it fails.
 * ``CAMCONTACT_DISABLE_PLUGIN_AUTOLOAD=1`` switches entry-point discovery off.
 * Unknown names raise :class:`~camcontact.errors.UnknownModelError` listing what is available.
 """
@@ -21,6 +26,7 @@ from __future__ import annotations
 import importlib
 import importlib.metadata as metadata
 import os
+import signal
 import threading
 import warnings
 from collections.abc import Callable, Iterable
@@ -28,7 +34,12 @@ from typing import Any
 
 import attrs
 
-from .errors import PluginLoadWarning, PluginNameClashWarning, UnknownModelError
+from .errors import (
+    PluginLoadError,
+    PluginLoadWarning,
+    PluginNameClashWarning,
+    UnknownModelError,
+)
 from .models.base import FAMILIES, CallableModel, Model, builtin_classes, check_family
 
 __all__ = [
@@ -38,6 +49,7 @@ __all__ = [
     "families",
     "get",
     "get_class",
+    "origin",
     "reset",
 ]
 
@@ -128,6 +140,36 @@ def _fits_family(obj: Any, family: str) -> str:
     return ""
 
 
+def _load(ep: metadata.EntryPoint) -> Any:
+    """``ep.load()``; a KeyboardInterrupt it raises is re-raised only when the user pressed Ctrl-C
+    (a SIGINT arrived while it loaded), else it is the plugin's own and fails the plugin like any
+    other exception (the SIGINT watch needs the main thread; elsewhere every KeyboardInterrupt is
+    re-raised)."""
+    interrupted: list[bool] = []
+    watching = threading.current_thread() is threading.main_thread()
+    previous = signal.getsignal(signal.SIGINT) if watching else None
+    if watching:
+
+        def watch(signum, frame):
+            interrupted.append(True)
+            if callable(previous):
+                previous(signum, frame)
+            elif previous != signal.SIG_IGN:
+                raise KeyboardInterrupt
+
+        signal.signal(signal.SIGINT, watch)
+    try:
+        return ep.load()
+    except KeyboardInterrupt:
+        if not watching or interrupted:
+            raise
+        raise PluginLoadError(f"entry point {ep.value} raised KeyboardInterrupt on import (no Ctrl-C was "
+                              "pressed)") from None
+    finally:
+        if watching:
+            signal.signal(signal.SIGINT, signal.SIG_DFL if previous is None else previous)
+
+
 def _discover(family: str) -> None:
     """Load the entry points of ``family`` once (thread-safe)."""
     if family in _plugins:
@@ -144,18 +186,19 @@ def _discover(family: str) -> None:
             dist = getattr(ep, "dist", None)
             source = f"{dist.name} {dist.version}" if dist is not None else "unknown distribution"
             try:
-                obj = ep.load()
-            except Exception as exc:  # a broken plugin must never break the others
-                reason = f"failed: {type(exc).__name__}: {exc}"
+                obj = _load(ep)
+                reason = _fits_family(obj, family)
+            except KeyboardInterrupt:  # the user's Ctrl-C (_load turns a plugin's own into PluginLoadError)
+                raise
+            except BaseException as exc:
                 warnings.warn(
                     f"camcontact plugin {ep.name!r} ({ep.value}) of family {family} from {source} "
                     f"could not be loaded and is skipped: {type(exc).__name__}: {exc}",
                     PluginLoadWarning,
                     stacklevel=3,
                 )
-                infos.append(PluginInfo(ep.name, family, source, "", reason, ep.value))
+                infos.append(PluginInfo(ep.name, family, source, "", f"failed: {type(exc).__name__}: {exc}", ep.value))
                 continue
-            reason = _fits_family(obj, family)
             if reason:
                 warnings.warn(
                     f"camcontact plugin {ep.name!r} ({ep.value}) from {source} does not fit family "
@@ -165,8 +208,8 @@ def _discover(family: str) -> None:
                 )
                 infos.append(PluginInfo(ep.name, family, source, "", f"failed: {reason}", ep.value))
                 continue
-            name = obj.name
-            reference = getattr(obj, "reference", "")
+            name = ep.name
+            reference = str(getattr(obj, "reference", ""))
             if name in _builtins[family] or name in loaded:
                 winner = "the built-in" if name in _builtins[family] else "an earlier plugin"
                 warnings.warn(
@@ -250,6 +293,18 @@ def get(
     raise UnknownModelError(
         f"a {family} model must be a name, a model class or instance, or a function; got {model!r}"
     )
+
+
+def origin(model: Any) -> PluginInfo | None:
+    """The registry row of the plugin that ``model`` (a model object or class) comes from, or None for
+    a built-in model and for a model given in code (not through an entry point)."""
+    cls = model if isinstance(model, type) else type(model)
+    with _lock:
+        for family, loaded in _plugins.items():
+            for name, obj in loaded.items():
+                if obj is model or obj is cls:
+                    return next(info for info in _infos[family] if info.name == name and info.status == "ok")
+    return None
 
 
 def entries(family: str | None = None) -> list[PluginInfo]:

@@ -9,13 +9,13 @@ import numpy as np
 import pandas as pd
 
 from .errors import InputError
-from .quantities import spec
+from .quantities import QUANTITIES, spec
 from .units import Q_
 
 if TYPE_CHECKING:  # pragma: no cover
     from .analysis import Result
 
-__all__ = ["column_name", "convert", "result_frame", "steps_frame", "text_table"]
+__all__ = ["column_name", "convert", "result_frame", "steps_frame", "text_table", "unexplained_values"]
 
 
 def _unit_label(unit: str) -> str:
@@ -65,11 +65,12 @@ def result_frame(result: Result, units: Mapping[str, str] | None = None, *, scal
     names = [n for n in result.outputs if (n in result.per_index) == indexed] if result.index else list(result.outputs)
     if indexed and result.index in names:
         names.remove(result.index)
+    tails = _status_cells(result, names)
     records = []
-    for label, row in zip(result.variants, result.rows):
+    for label, row, tail in zip(result.variants, result.rows, tails):
         head: dict[str, Any] = {"variant": label} if label else {}
         if not indexed:
-            records.append(head | dict(cell(name, row.get(name)) for name in names))
+            records.append(head | dict(cell(name, row.get(name)) for name in names) | tail)
             continue
         index_column, index_values = cell(result.index, row[result.index])
         index_values = np.atleast_1d(index_values)
@@ -77,13 +78,36 @@ def result_frame(result: Result, units: Mapping[str, str] | None = None, *, scal
         columns = {column: np.broadcast_to(np.asarray(values, dtype=object if np.ndim(values) else None), index_values.shape)
                    for column, values in (cell(name, row.get(name)) for name in names)}
         for i, position in enumerate(index_values):
-            records.append(head | {index_column: position} | {column: values[i] for column, values in columns.items()})
+            records.append(head | {index_column: position} | {column: values[i] for column, values in columns.items()}
+                           | tail)
     return pd.DataFrame.from_records(records)
 
 
+def _status_cells(result: Result, names: list[str]) -> list[dict[str, Any]]:
+    """Per variant: ``not_given`` (the outputs among ``names`` its models do not give, when another variant
+    gives them) and ``failed``/``error`` (its failed steps) — columns present only when some row needs them."""
+    failures = getattr(result, "failures", ())
+    failed_outputs = {(f.variant, name) for f in failures for name in f.outputs}
+    # not given: an output this variant's models do not give, or one a step gives as None (no value: the
+    # lubricant's conductivity when the data sheet has none)
+    absent = [[name for name in names if row.get(name) is None and (label, name) not in failed_outputs]
+              for label, row in zip(result.variants, result.rows)]
+    tails: list[dict[str, Any]] = [{} for _ in result.variants]
+    if any(absent):
+        for tail, missing in zip(tails, absent):
+            tail["not_given"] = ", ".join(missing)
+    if failures:
+        for tail, label in zip(tails, result.variants):
+            mine = [f for f in failures if f.variant == label]
+            tail["failed"] = bool(mine)
+            tail["error"] = "; ".join(f.describe() for f in mine if not f.skipped)
+    return tails
+
+
 def steps_frame(result: Result) -> pd.DataFrame:
-    """The step record of a result as a DataFrame (wall time in ms)."""
-    return pd.DataFrame(
+    """The step record of a result as a DataFrame (wall time in ms); when a step failed, an ``error``
+    column says why."""
+    frame = pd.DataFrame(
         {
             "step": [r.step for r in result.records],
             "model": [r.model for r in result.records],
@@ -92,6 +116,9 @@ def steps_frame(result: Result) -> pd.DataFrame:
             "wall time [ms]": [1e3 * r.wall_time for r in result.records],
         }
     )
+    if any(r.error for r in result.records):
+        frame["error"] = [r.error for r in result.records]
+    return frame
 
 
 def text_table(frame: pd.DataFrame, transpose: bool = True) -> str:
@@ -106,3 +133,30 @@ def text_table(frame: pd.DataFrame, transpose: bool = True) -> str:
         return str(value)
 
     return shown.map(fmt).to_string()
+
+
+def unexplained_values(frame: pd.DataFrame) -> list[tuple[int, str]]:
+    """(row position, column) of every NaN or infinite number in a report frame without its reason beside it.
+
+    A non-finite cell is explained when its row ``failed`` (a step failed; ``error`` says why), when its
+    quantity is listed in the row's ``not_given`` (this variant's models do not give it), or by a status
+    cell of its quantity's :attr:`~camcontact.quantities.QuantitySpec.nan_when` in the row (an unloaded
+    roller, a traction drive in gross slip, a friction correlation outside its validity). Reports of
+    camcontact have none; the fuzz harness and the tests check it.
+    """
+    unexplained = []
+    for column in frame.columns:
+        try:
+            values = np.asarray(frame[column], dtype=float)
+        except (TypeError, ValueError):  # text and object columns
+            continue
+        name = column.split(" [", 1)[0]
+        reasons = QUANTITIES[name].nan_when if name in QUANTITIES else ()
+        for position in np.flatnonzero(~np.isfinite(values)):
+            row = frame.iloc[position]
+            if bool(row.get("failed", False)) or name in str(row.get("not_given", "")).split(", "):
+                continue
+            if any(status in row.index and row[status] == value for status, value in reasons):
+                continue
+            unexplained.append((int(position), column))
+    return unexplained

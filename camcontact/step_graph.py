@@ -35,7 +35,7 @@ import attrs
 
 from .errors import InputError
 
-__all__ = ["EFFECTS", "SceneGraph", "Step", "StepRecord", "add_scene_loader", "builder_for", "checked_request", "given",
+__all__ = ["EFFECTS", "SceneGraph", "Step", "StepFailure", "StepRecord", "add_scene_loader", "builder_for", "checked_request", "given",
            "scene_builder", "scene_builders", "step"]
 
 #: Physical effects a scene may switch on (each scene supports a subset).
@@ -230,13 +230,37 @@ class SceneGraph:
 
 @attrs.frozen
 class StepRecord:
-    """What ran: step, model and version, variant, wall time [s]."""
+    """What ran: step, model and version, variant, wall time [s], and why it failed ("" when it did not)."""
 
     step: str
     model: str
     version: str
     variant: str
     wall_time: float
+    error: str = ""
+
+
+@attrs.frozen
+class StepFailure:
+    """A step of one variant that gave no outputs (``strict=False``): they are NaN in the report.
+
+    ``skipped`` is True for a step that did not run because a step it needs failed; ``reason`` is
+    ``"ExceptionType: message"`` (or which failed outputs it needed); ``source`` names the plugin
+    model and its distribution when one was involved ("" otherwise).
+    """
+
+    step: str
+    model: str
+    variant: str
+    outputs: tuple[str, ...]
+    reason: str
+    skipped: bool = False
+    source: str = ""
+
+    def describe(self) -> str:
+        """One line: ``"step 'film' (multigrid): ConvergenceError: ..."``."""
+        model = f" ({self.model})" if self.model else ""
+        return f"step {self.step!r}{model}: {self.reason}"
 
 
 def given(**values: Any) -> dict[str, Any]:

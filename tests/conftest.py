@@ -33,6 +33,16 @@ def thermal_steel_ls1():
 
 
 @pytest.fixture
+def oiled_contact(steel):
+    """A lubricated steel line contact, 3 kN on 15 mm, R 40/10 mm, 3 m/s, an ISO VG 100 oil at 80 degC (the
+    README's first example): p_h 958 MPa, films of a few tenths of a micron by the formulas."""
+    oil = cc.Lubricant(nu40="100 cSt", nu100="11 cSt", density="870 kg/m^3", alpha="22 1/GPa")
+    return cc.LineContact(body1=cc.Body(material=steel, radius="40 mm", speed="3 m/s", roughness="0.2 um"),
+                          body2=cc.Body(material=steel, radius="10 mm", speed="3 m/s", roughness="0.2 um"),
+                          load="3 kN", length="15 mm", lubricant=oil, temperature="80 degC")
+
+
+@pytest.fixture
 def clean_registry():
     """Forget discovered plugins before and after a test that fakes entry points."""
     registry.reset()

@@ -272,8 +272,8 @@ class Lubricant(Component):
                 )
         elif self.alpha is not None and self.roelands_z is not None:
             raise InputError(
-                f"{where}: give alpha or roelands_z, not both: with a viscosity they are tied by the "
-                "Roelands consistency relation"
+                f"{where}: with the viscosity given ({sources[0]}) give alpha or roelands_z, not both: they are "
+                "tied by the Roelands consistency relation"
             )
         if self.alpha_correlation is not None:
             if self.alpha is not None or self.roelands_z is not None:
@@ -336,6 +336,16 @@ class Lubricant(Component):
         if points is None:
             return None
         return registry.get("viscosity_laws", self.viscosity_temperature_law).fit(*points)
+
+    def extrapolates(self, temperature: float | None) -> bool:
+        """True when ``temperature`` [K] lies outside the temperatures of the viscosity data (40 and 100 °C
+        for nu40/nu100; the span of viscosity_data), where the viscosity–temperature law is extrapolated;
+        False without temperature data (the viscosity is the one given)."""
+        points = self._points()
+        if points is None or temperature is None:
+            return False
+        temperatures = points[0]
+        return bool(temperature < temperatures.min() - 1e-9 or temperature > temperatures.max() + 1e-9)
 
     @property
     def isothermal(self) -> bool:

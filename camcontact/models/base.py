@@ -13,6 +13,12 @@ model declares, as class attributes:
     names of the SI state quantities it reads and returns; the :class:`~camcontact.analysis.Analysis`
     builds its step graph from them.
 
+The outputs of a model that is not built in (a plugin, a user's class or function) are checked
+when it is called: every numeric output finite, and the family's ``positive_outputs`` > 0 and
+``nonnegative_outputs`` >= 0 (a film, a life, a friction coefficient); a violation is a
+:class:`~camcontact.errors.ModelOutputError` naming the model, the output and the value, which an
+analysis reports as the failure of that model's step.
+
 and implements :meth:`Model.evaluate` on SI floats/arrays (keyword arguments named as in
 ``requires``; units in brackets in the docstring). ``model(state)`` picks ``requires``
 from a mapping and calls ``evaluate``.
@@ -27,7 +33,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ..errors import InputError, UnknownModelError
+from ..errors import InputError, ModelOutputError, UnknownModelError
 
 __all__ = [
     "BUILTIN_MARK",
@@ -49,6 +55,7 @@ __all__ = [
     "check_family",
     "float_or_array",
     "is_builtin",
+    "output_problems",
     "validity_messages",
 ]
 
@@ -87,6 +94,9 @@ class Model(abc.ABC):
     optional_requires: ClassVar[tuple[str, ...]] = ()
     provides: ClassVar[tuple[str, ...]] = ()
     version: ClassVar[str] = "1"
+    #: outputs that must be > 0 / >= 0 (checked for models that are not built in)
+    positive_outputs: ClassVar[tuple[str, ...]] = ()
+    nonnegative_outputs: ClassVar[tuple[str, ...]] = ()
 
     @classmethod
     def summary(cls) -> str:
@@ -107,7 +117,13 @@ class Model(abc.ABC):
             )
         inputs = {key: state[key] for key in self.requires}
         inputs.update({key: state[key] for key in self.optional_requires if state.get(key) is not None})
-        return self.evaluate(**inputs)
+        produced = self.evaluate(**inputs)
+        if not is_builtin(type(self)):
+            problems = output_problems(self, produced)
+            if problems:
+                raise ModelOutputError(f"model {self.name!r} ({self.family}, {type(self).__module__}."
+                                       f"{type(self).__qualname__}) gave {'; '.join(problems)}")
+        return produced
 
     def check_validity(self, values: Mapping[str, Any]) -> list[str]:
         """Messages for inputs outside :attr:`validity` (empty when all are inside)."""
@@ -193,6 +209,7 @@ class DensityLaw(Model):
     """Family ``density_laws``: rho(p)/rho0 [-] at gauge pressure p [Pa]."""
 
     family = "density_laws"
+    positive_outputs = ("density_ratio",)
     requires = ("pressure",)
     provides = ("density_ratio",)
 
@@ -218,6 +235,7 @@ class FilmModel(Model):
     """
 
     family = "film_models"
+    positive_outputs = ("h_c", "h_min")
     geometry: ClassVar[str] = "line"
     can_disable: ClassVar[tuple[str, ...]] = ()
 
@@ -229,18 +247,21 @@ class FrictionModel(Model):
     """
 
     family = "friction_models"
+    nonnegative_outputs = ("friction_coefficient",)
 
 
 class WearModel(Model):
     """Family ``wear_models``: wear rate; ``provides`` includes ``"wear_rate"`` [m^3/s]."""
 
     family = "wear_models"
+    nonnegative_outputs = ("wear_rate",)
 
 
 class LifeModel(Model):
     """Family ``life_models``: fatigue life; ``provides`` includes ``"L10"`` [revolutions or cycles]."""
 
     family = "life_models"
+    positive_outputs = ("L10",)
 
 
 class TractionModel(Model):
@@ -261,6 +282,7 @@ class BearingFrictionModel(Model):
     """
 
     family = "bearing_friction_models"
+    nonnegative_outputs = ("friction_moment",)
 
 
 class MotionLaw(Model):
@@ -331,6 +353,30 @@ def is_builtin(obj: Any) -> bool:
 def builtin_classes(module: ModuleType) -> list[type[Model]]:
     """The classes marked by :func:`builtin` that ``module`` defines, in definition order."""
     return [obj for obj in vars(module).values() if is_builtin(obj) and obj.__module__ == module.__name__]
+
+
+def output_problems(model: Model, produced: Any) -> list[str]:
+    """What is wrong with the outputs ``produced`` of ``model`` (empty: nothing): not a mapping, a name of
+    its ``provides`` missing, a numeric output not finite, or outside the sign its family requires
+    (``positive_outputs``, ``nonnegative_outputs`` of the family base class)."""
+    if not isinstance(produced, Mapping):
+        return [f"{type(produced).__name__} instead of a mapping of its outputs {list(model.provides)}"]
+    family = FAMILIES.get(model.family, Model)
+    problems = [f"no {name!r} (it declares provides = {list(model.provides)})"
+                for name in model.provides if name not in produced]
+    for name, value in produced.items():
+        try:
+            array = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):  # an object (a numerical solution, a record): not a number to check
+            continue
+        if not np.all(np.isfinite(array)):
+            bad = array[~np.isfinite(array)] if array.ndim else array
+            problems.append(f"{name} = {float(np.ravel(bad)[0])!r} (not finite)")
+        elif name in family.positive_outputs and np.any(array <= 0.0):
+            problems.append(f"{name} = {float(array.min())!r} (allowed: > 0)")
+        elif name in family.nonnegative_outputs and np.any(array < 0.0):
+            problems.append(f"{name} = {float(array.min())!r} (allowed: >= 0)")
+    return problems
 
 
 class CallableModel(Model):

@@ -83,7 +83,7 @@ DEFAULT_OUTPUTS = (
     "torque", "output_torque", "cam_axial_force", "normal_force", "tangential_force_in", "tangential_force_out",
     "traction_needed_in", "traction_needed_out", "mu_min", "traction_check",
     "Rx", "Ry", "a_rolling", "a_transverse", "p_h", "approach", "pressure_check", "stress_limit_exceeded",
-    "h_c_in", "h_min_in", "h_c_out", "h_min_out", "Lambda_in", "Lambda_out",
+    "h_c_in", "h_min_in", "h_c_out", "h_min_out", "Lambda_in", "Lambda_out", "viscosity_extrapolated",
     "creepage_in", "creepage_out", "traction_regime_in", "traction_regime_out", "gross_slip_in", "gross_slip_out",
     "traction_capacity_in", "traction_capacity_out", "traction_margin_in", "traction_margin_out",
     "spin_moment_in", "spin_moment_out", "creep_loss_in", "creep_loss_out", "spin_loss_in", "spin_loss_out",

@@ -73,17 +73,17 @@ __all__ = ["build_bearing", "bearing_inputs"]
 SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
 DEFAULT_EFFECTS = SUPPORTED_EFFECTS
 PER_ROLLER = frozenset({
-    "roller_row", "azimuth", "Q", "roller_approach",
+    "roller_row", "azimuth", "Q", "loaded", "roller_approach",
     *(f"{q}_{race}" for q in ("b", "p_h", "h_c", "h_min", "Lambda", "friction_coefficient", "friction_valid",
                               "flash_temperature", "rolling_resistance")
       for race in RACES), "contact_regime",
 })
 DEFAULT_OUTPUTS = (
-    "roller_row", "azimuth", "Q", "b_inner", "p_h_inner", "b_outer", "p_h_outer", "h_min_inner", "h_min_outer",
+    "roller_row", "azimuth", "Q", "loaded", "b_inner", "p_h_inner", "b_outer", "p_h_outer", "h_min_inner", "h_min_outer",
     "Lambda_inner", "Lambda_outer", "contact_regime", "friction_coefficient_inner", "friction_coefficient_outer",
     "friction_valid_inner", "friction_valid_outer", "flash_temperature_inner", "flash_temperature_outer",
     "Q_max", "loaded_rollers", "load_zone", "last_loaded_azimuth", "delta_r", "delta_a", "p_h_max", "tau_max",
-    "z_tau_max", "cage_speed", "u_m", "h_min_bearing", "Lambda_bearing", "friction_power", "friction_validity", "P",
+    "z_tau_max", "cage_speed", "u_m", "h_min_bearing", "Lambda_bearing", "viscosity_extrapolated", "friction_power", "friction_validity", "P",
     "L10", "L10h", "kappa", "a_ISO", "L_nm", "L_nmh",
     "friction_moment_skf", "friction_power_skf", "friction_moment_palmgren", "friction_power_palmgren",
 )

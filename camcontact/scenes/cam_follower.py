@@ -58,7 +58,7 @@ DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard
                   "traction": None}
 PER_ANGLE = frozenset((
     "cam_angle", *FOLLOWER_KINEMATICS, *FORCES_1DOF, "normal_force", "w", "b", "p_h", "approach", "U", "G", "W", "M",
-    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_regime", "H0", "H_min", "H_c", "spike_pressure", "Lambda_min", "friction_force",
+    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_regime", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
     "friction_coefficient", "friction_power", "wear_rate", "contact_open", "tangential_force", "friction_torque",
     "cam_torque_with_friction", "friction_arm", *(q for q in ROLLER_OUTPUTS if q != "roller_cycle"),
     "asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity", "mixed_valid",
@@ -68,7 +68,7 @@ DEFAULT_OUTPUTS = (
     "cam_angle", "lift", "follower_velocity", "follower_acceleration", "pressure_angle", "cam_radius", "R", "u_m",
     "contact_force", "cam_torque", "w", "b", "p_h", "M", "L", "h_c", "h_min", "film_regime", "friction_force",
     "friction_coefficient", "friction_power", "friction_torque", "cam_torque_with_friction", "wear_rate",
-    "motion_continuity", "natural_frequency", "k_min", "jump_margin", "jump", "contact_force_max", "p_h_max", "h_min_cycle",
+    "motion_continuity", "natural_frequency", "k_min", "jump_margin", "jump", "contact_force_max", "p_h_max", "h_min_cycle", "viscosity_extrapolated",
     "friction_power_mean", "friction_energy_per_cycle", "friction_torque_mean", "wear_rate_mean",
 )
 HINTS = {

@@ -52,7 +52,7 @@ DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
 DEFAULT_FILM = "pan_hamrock"
 DEFAULT_OUTPUTS = (
     "E_reduced", "R", "w", "u_m", "b", "p_h", "approach", "tau_max", "z_tau_max", "tau_xz_range",
-    "eta0", "alpha", "M", "L", "h_c", "h_min", "Lambda_c", "Lambda_min", "regime", "film_validity",
+    "eta0", "alpha", "viscosity_extrapolated", "M", "L", "h_c", "h_min", "Lambda_c", "Lambda_min", "regime", "film_validity",
 )
 MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "mixed_valid")
 FRICTION_OUTPUTS = ("traction_coefficient", "friction_per_length", "friction_power_per_length",

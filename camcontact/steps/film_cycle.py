@@ -215,16 +215,18 @@ def spike_height(solution) -> float:
     return math.nan if spike is None else spike[0]
 
 
-@step("ehl_details", provides=("H0", "H_min", "H_c", "spike_pressure"))
+@step("ehl_details", provides=("H0", "H_min", "H_c", "spike_pressure", "pressure_spike"))
 def numerical_film_details(film_solutions):
     """H0, H_min, H_c and the spike height P_s [-] of the numerical solution at every angle (0 where
-    there is none); InputError when the film model is not numerical."""
+    there is none; NaN where the solution has no distinct spike, which ``pressure_spike`` (bool) says);
+    InputError when the film model is not numerical."""
     if all(sol is None for sol in film_solutions):
         raise InputError("H0, H_min, H_c and spike_pressure come from the numerical solution: use the film model "
                          "'multigrid'")
     pick = (lambda attr: np.array([getattr(sol, attr) if sol is not None else 0.0 for sol in film_solutions]))
     return {"H0": pick("H0"), "H_min": pick("H_min"), "H_c": pick("H_c"),
-            "spike_pressure": np.array([spike_height(sol) for sol in film_solutions])}
+            "spike_pressure": (spike := np.array([spike_height(sol) for sol in film_solutions])),
+            "pressure_spike": ~np.isnan(spike)}
 
 
 def chain_count(model, solves: int) -> int:

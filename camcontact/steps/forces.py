@@ -102,12 +102,14 @@ def jump_report(contact_open, contact_force, cam_angle):
                     f"{degrees_text(cam_angle[contact_open][:1])} (contact force {float(np.min(contact_force)):.4g} N)"}
 
 
-@step("load_distribution", provides=("roller_row", "azimuth", "Q", "roller_approach", "Q_max", "loaded_rollers",
+@step("load_distribution", provides=("roller_row", "azimuth", "Q", "loaded", "roller_approach", "Q_max", "loaded_rollers",
                                      "load_zone", "last_loaded_azimuth", "delta_r", "delta_a", "force_residual"),
       model="iso_ts_16281_line")
 def load_distribution(bearing, radial_load, axial_load):
     """Roller loads Q [N] of ``bearing`` under F_r, F_a [N] with its clearance (numerical, both rows),
-    per roller row by row, with the rings' displacements [m] and the force balance's residual.
+    per roller row by row (``loaded``: Q > 0, the rollers in contact; an unloaded roller has no contact,
+    so its Hertz, film and friction values are NaN), with the rings' displacements [m] and the force
+    balance's residual.
 
     ``loaded_rollers``: the number of rollers with Q > 0 (both rows); ``load_zone`` [rad]: the load-zone
     half-angle psi_l = arccos(P_d / (2 delta_r)) of Harris & Kotzalas (ch. 7; with the axial
@@ -118,7 +120,8 @@ def load_distribution(bearing, radial_load, axial_load):
     rows, Z = result.Q.shape
     return {
         "roller_row": np.repeat(np.arange(1.0, rows + 1), Z), "azimuth": result.azimuths.ravel(),
-        "Q": result.Q.ravel(), "roller_approach": result.approach.ravel(), "Q_max": result.Q_max,
+        "Q": result.Q.ravel(), "loaded": result.loaded.ravel().astype(bool), "roller_approach": result.approach.ravel(),
+        "Q_max": result.Q_max,
         "loaded_rollers": float(result.loaded.sum()), "load_zone": float(result.load_zone.max()),
         "last_loaded_azimuth": float(result.last_loaded_azimuth.max()),
         "delta_r": result.delta_r, "delta_a": result.delta_a, "force_residual": result.residual,

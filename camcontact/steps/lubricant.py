@@ -17,7 +17,7 @@ __all__ = ["LUBRICANT_OUTPUTS", "check_pressure_viscosity", "isothermal_lubrican
            "lubricant_label", "lubricant_state", "lubricant_step"]
 
 LUBRICANT_OUTPUTS = ("lubricant_state", "eta0", "alpha", "roelands_z", "kinematic_viscosity",
-                     "thermoviscous_coefficient", "lubricant_conductivity", "density_law")
+                     "thermoviscous_coefficient", "lubricant_conductivity", "density_law", "viscosity_extrapolated")
 
 
 def lubricant_inputs(lubricant: Any, temperature: float | None) -> dict[str, Any]:
@@ -53,8 +53,10 @@ def check_pressure_viscosity(lubricant, piezoviscosity) -> None:
 @step("lubricant", provides=LUBRICANT_OUTPUTS, model=lubricant_label, check=check_pressure_viscosity)
 def lubricant_state(lubricant, temperature, compressibility):
     """The lubricant at ``temperature`` [K]: its state object, eta0
-    [Pa s], alpha [1/Pa], Roelands z, kinematic viscosity [m^2/s], beta [1/K], conductivity [W/(m K)]
-    and the density law the numerical film uses (``"incompressible"`` unless ``compressibility``)."""
+    [Pa s], alpha [1/Pa], Roelands z, kinematic viscosity [m^2/s], beta [1/K], conductivity [W/(m K)],
+    the density law the numerical film uses (``"incompressible"`` unless ``compressibility``) and
+    ``viscosity_extrapolated``: True when the temperature lies outside the viscosity data's temperatures
+    (:meth:`~camcontact.components.Lubricant.extrapolates`: a 1000 °C oil from 40/100 °C data is said so)."""
     state = lubricant.state(temperature)
     return _outputs(lubricant, state, compressibility)
 
@@ -73,4 +75,5 @@ def _outputs(lubricant, state, compressibility) -> dict:
         "thermoviscous_coefficient": state.thermoviscous_coefficient,
         "lubricant_conductivity": state.thermal_conductivity,
         "density_law": lubricant.density_law if compressibility else "incompressible",
+        "viscosity_extrapolated": lubricant.extrapolates(state.temperature),
     }

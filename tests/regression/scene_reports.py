@@ -83,7 +83,7 @@ def _run(component, models, effects, outputs):
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return cc.Analysis(component, outputs=outputs, models=models, effects=effects).run()
+        return cc.Analysis(component, outputs=outputs, models=models, effects=effects, strict=True).run()
 
 
 def report(component, models, effects, outputs) -> dict:

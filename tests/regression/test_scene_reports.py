@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import camcontact as cc
+from camcontact.report import unexplained_values
 
 from .scene_reports import GOLDEN, cases, load, report
 
@@ -58,7 +59,7 @@ def test_report_is_unchanged(name):
         assert_same_frame(f"{name} {frame}", frozen[frame], now[frame])
     for output, message in frozen["refused"].items():
         with pytest.raises(cc.InputError) as error:
-            cc.Analysis(component, outputs=[output], models=models, effects=effects).run()
+            cc.Analysis(component, outputs=[output], models=models, effects=effects, strict=True).run()
         assert str(error.value) == message
 
 
@@ -70,3 +71,16 @@ def test_golden_comparison_fails_on_a_changed_value():
         with pytest.raises(AssertionError):
             assert_same_frame("changed", frozen, {"columns": ["a [m]", "b"], "rows": changed})
     assert np.isnan(_number({"float": "nan"}))
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_every_nan_of_the_complete_report_has_its_reason(name):
+    """Issue 18: no silent NaN. Every NaN or infinite number of the complete report (every output the scene
+    can give) has its reason in the same row: a failed step, an output this variant's models do not give,
+    an unloaded roller, gross slip, a correlation outside its validity (camcontact.report.unexplained_values)."""
+    component, models, effects = CASES[name]
+    frozen = load(name)
+    result = cc.Analysis(component, outputs=frozen["outputs"], models=models, effects=effects).run()
+    frames = [result.to_frame()] + ([result.summary_frame()] if result.index is not None else [])
+    for frame in frames:
+        assert unexplained_values(frame) == []

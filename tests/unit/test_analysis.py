@@ -5,7 +5,7 @@ import pandas as pd
 import pytest
 
 import camcontact as cc
-from camcontact.errors import InputError
+from camcontact.errors import InputError, StepFailureWarning
 from camcontact.models.base import FilmModel
 from camcontact.models.film_line import LINE_INPUTS, moes_line_film
 
@@ -96,8 +96,10 @@ def test_variants_share_steps_and_differ_downstream(contact):
 def test_explicit_outputs_with_variants_that_lack_one(contact):
     result = cc.Analysis(contact, outputs=["h_min", "h_c"], models={"film": ["grubin", "dowson_higginson"]}).run()
     frame = result.to_frame()
-    assert list(frame.columns) == ["variant", "h_min [µm]", "h_c [µm]"]
+    assert list(frame.columns) == ["variant", "h_min [µm]", "h_c [µm]", "not_given"]
     assert np.isnan(frame.loc[0, "h_min [µm]"]) and np.isnan(frame.loc[1, "h_c [µm]"])
+    # the NaN cells have their reason beside them: what this row's film model does not give
+    assert list(frame["not_given"]) == ["h_min", "h_c"]
 
 
 def test_two_models_of_the_same_name_are_not_confused(contact):
@@ -168,13 +170,18 @@ def test_point_model_rejected_for_line_contact(contact):
         cc.Analysis(contact, outputs=["h_c"], models={"film": "hamrock_dowson"})
 
 
-def test_zero_entrainment_speed_is_an_error_not_nan(steel):
+def test_zero_entrainment_speed_is_an_error_not_silent_nan(steel):
     oil = cc.Lubricant(alpha="2.2e-8 1/Pa", roelands_z=0.68)
     c = cc.LineContact(body1=cc.Body(material=steel, radius="20 mm", speed="1 m/s"),
                        body2=cc.Body(material=steel, radius="10 mm", speed="-1 m/s"),
                        load="1 kN", length="10 mm", lubricant=oil)
     with pytest.raises(InputError, match="entrainment speed"):
-        cc.Analysis(c, outputs=["h_c"]).run()
+        cc.Analysis(c, outputs=["h_c"], strict=True).run()
+    with pytest.warns(StepFailureWarning, match="entrainment speed"):
+        result = cc.Analysis(c, outputs=["p_h", "h_c"]).run()
+    frame = result.to_frame()
+    assert frame.loc[0, "p_h [MPa]"] > 0 and np.isnan(frame.loc[0, "h_c [µm]"])
+    assert bool(frame.loc[0, "failed"]) and "step 'ehl_groups'" in frame.loc[0, "error"]
 
 
 def test_not_a_scene():

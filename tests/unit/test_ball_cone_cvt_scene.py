@@ -110,7 +110,7 @@ def test_model_slots_and_bad_input():
 
 def test_sweep_frame_records_failed_cases_and_keeps_the_others():
     frame = sweep_frame(point(), {"ratio": [1.0, 3.0], "power": ["50 W", "100 W"]}, outputs=["normal_force"])
-    assert len(frame) == 4 and list(frame.columns[:2]) == ["ratio [-]", "power [W]"]
+    assert len(frame) == 4 and list(frame.columns[:3]) == ["case", "ratio [-]", "power [W]"]
     failed = frame[frame["error"] != ""]
     assert set(failed["ratio [-]"]) == {3.0} and failed["error"].str.contains("needs a tilt beyond tilt_max").all()
     assert failed["error"].str.startswith("InputError: ").all() and set(failed["power [W]"]) == {50.0, 100.0}

@@ -89,9 +89,9 @@ def test_missing_and_bad_inputs_are_named():
         cc.Analysis(scene(bearing=bearing(fatigue_load_limit=None)), outputs=["L_nm"])
     no_density = cc.Lubricant(name="grease without base-oil data", eta0="0.07 Pa*s", alpha="2e-8 1/Pa")
     with pytest.raises(InputError, match="kinematic viscosity"):
-        cc.Analysis(scene(lubricant=no_density), outputs=["kappa"]).run()
+        cc.Analysis(scene(lubricant=no_density), outputs=["kappa"], strict=True).run()
     with pytest.raises(InputError, match="no entrainment"):
-        cc.Analysis(scene(speed="300 rpm"), outputs=["h_min_bearing"]).run()
+        cc.Analysis(scene(speed="300 rpm"), outputs=["h_min_bearing"], strict=True).run()
     with pytest.raises(InputError, match="unknown model slots"):
         cc.Analysis(scene(), models={"wear": "archard"})
 

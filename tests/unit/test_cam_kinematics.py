@@ -111,7 +111,7 @@ def test_undercut_profile_is_an_error_naming_the_angle():
     scene = _scene(cam=cc.Cam(program=steep, base_radius="15 mm", width="15 mm", material=STEEL),
                    follower=cc.Follower.flat(material=STEEL), angle_step="1 deg")
     with pytest.raises(InputError, match=r"undercuts .* at \d+(\.\d+)?°"):
-        cc.Analysis(scene, outputs=["cam_radius"]).run()
+        cc.Analysis(scene, outputs=["cam_radius"], strict=True).run()
 
 
 def test_pressure_angle_over_the_limit_warns_with_the_angle():

@@ -63,7 +63,7 @@ def test_temperature_loop_steps_down_until_lambda_exceeds_lambda_min():
 
 def test_temperature_loop_that_cannot_end_names_lambda_min():
     with pytest.raises(InputError, match="lambda_min = 1e\\+06: the thesis's temperature loop reached .* °C"):
-        cc.Analysis(contact(lambda_min=1e6), outputs=["Lambda_oc"]).run()
+        cc.Analysis(contact(lambda_min=1e6), outputs=["Lambda_oc"], strict=True).run()
     calls = []
 
     def never(theta):
@@ -117,15 +117,15 @@ def test_missing_inputs_are_named_before_running():
 def test_lubricant_without_the_data_a_convention_needs():
     eta_only = cc.Lubricant(name="eta only", eta0="0.07 Pa*s", alpha="2e-8 1/Pa")
     with pytest.raises(InputError, match="'eta only': the thesis convention needs nu40, nu100, density"):
-        cc.Analysis(contact(lubricant=eta_only), outputs=["h_c"]).run()
+        cc.Analysis(contact(lubricant=eta_only), outputs=["h_c"], strict=True).run()
     no_alpha = cc.Lubricant(name="no alpha", nu40="575 cSt", nu100="50 cSt", density="0.92 g/cm^3")
     with pytest.raises(InputError, match="'no alpha' has no pressure-viscosity data"):
-        cc.Analysis(contact(lubricant=no_alpha), outputs=["h_c"], models={"convention": "corrected"}).run()
+        cc.Analysis(contact(lubricant=no_alpha), outputs=["h_c"], models={"convention": "corrected"}, strict=True).run()
 
 
 def test_ring_at_rest_fails_loudly():
     with pytest.raises(InputError, match="ring_speed = 0"):
-        cc.Analysis(contact(ring_speed="0 rpm"), outputs=["h_c"], models={"convention": "corrected"}).run()
+        cc.Analysis(contact(ring_speed="0 rpm"), outputs=["h_c"], models={"convention": "corrected"}, strict=True).run()
 
 
 def test_inner_raceway_is_convex_and_derives_its_pitch_diameter():

@@ -180,7 +180,7 @@ def test_cli_sweep_serial_and_on_two_workers_give_the_same_table(tmp_path, capsy
     assert main(["sweep", scene, "--workers", "2", "--csv", str(pooled), "--no-progress"]) == 0
     a, b = pd.read_csv(serial), pd.read_csv(pooled)
     pd.testing.assert_frame_equal(a, b)
-    assert len(a) == 9 and list(a.columns[:2]) == ["speed [rpm]", "follower.roller_radius [mm]"]
+    assert len(a) == 9 and list(a.columns[:3]) == ["case", "speed [rpm]", "follower.roller_radius [mm]"]
     for _, group in a.groupby("speed [rpm]"):
         assert (group.sort_values("follower.roller_radius [mm]")["p_h_max [MPa]"].diff().dropna() < 0).all()
     assert "9 rows (0 failed cases)" in capsys.readouterr().out
@@ -195,3 +195,125 @@ def test_sweep_table_errors_are_named(tmp_path):
     plain = tmp_path / "plain.toml"
     plain.write_text(default_scene_text(), encoding="utf-8")
     assert main(["sweep", str(plain)]) == 2
+
+
+# ------------------------------------------------------------------ reliability of the command (issue 18)
+LINE_SCENE = MINIMAL.replace('outputs = ["b", "p_h"]', 'outputs = ["b", "p_h"]\n[report]\nunits = { b = "um" }')
+
+
+def _scene_file(tmp_path, text=LINE_SCENE, name="s.toml"):
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return str(path)
+
+
+@pytest.mark.parametrize("units", [["--units", "p_h=GPa", "--units", "b=mm"], ["--units", "p_h=GPa,b=mm"],
+                                   ["--units", " p_h = GPa , b = mm "]])
+def test_cli_units_repeated_or_comma_separated_before_or_after_the_scene(tmp_path, capsys, units):
+    scene, csv = _scene_file(tmp_path), str(tmp_path / "r.csv")
+    for argv in (["run", *units, scene, "--csv", csv], ["run", scene, "--csv", csv, *units]):
+        assert main(argv) == 0
+        assert list(pd.read_csv(csv).columns) == ["b [mm]", "p_h [GPa]"]
+    assert "steps ran in" in capsys.readouterr().out
+
+
+def test_cli_checks_units_and_paths_before_running(tmp_path, capsys, monkeypatch):
+    """A bad unit or output path is refused before the analysis runs (no long run wasted)."""
+    from camcontact.analysis import Analysis
+
+    def never(self):
+        raise AssertionError("the analysis ran")
+
+    monkeypatch.setattr(Analysis, "run", never)
+    scene = _scene_file(tmp_path)
+    for extra, message in [(["--units", "p_h=mm"], "--units: p_h = 'mm' has dimension [length]; p_h is [Pa]"),
+                           (["--units", "h_min=nm"], "--units: 'h_min' is not an output of this analysis; outputs: b, p_h"),
+                           (["--csv", str(tmp_path / "no" / "r.csv")], "the directory"),
+                           (["--plot", str(tmp_path)], "is a directory")]:
+        assert main(["run", scene, *extra]) == 2
+        err = capsys.readouterr().err
+        assert err.startswith("camcontact: error: ") and message in err and err.count("\n") == 1
+    bad = _scene_file(tmp_path, LINE_SCENE.replace('b = "um"', 'b = "GPa"'), "bad.toml")
+    assert main(["run", bad]) == 2
+    assert "bad.toml [report] units: b = 'GPa' has dimension" in capsys.readouterr().err
+
+
+def test_cli_exit_codes_and_debug(tmp_path, capsys, monkeypatch):
+    """2 bad input, 1 a failure while running (its type and message, a hint at --debug), 130 Ctrl-C; --debug
+    (before or after the command) prints the traceback too."""
+    from camcontact.analysis import Analysis
+
+    scene = _scene_file(tmp_path)
+    assert main(["run", str(tmp_path / "missing.toml")]) == 2
+    assert capsys.readouterr().err.count("\n") == 1
+    for argv in (["--debug", "run", str(tmp_path / "missing.toml")], ["run", str(tmp_path / "missing.toml"), "--debug"]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err
+        assert "Traceback" in err and err.splitlines()[-1].startswith("camcontact: error: cannot read scene file")
+
+    def boom(self):
+        raise ZeroDivisionError("float division by zero")
+
+    monkeypatch.setattr(Analysis, "run", boom)
+    assert main(["run", scene, "--csv", str(tmp_path / "r.csv")]) == 1
+    assert capsys.readouterr().err == ("camcontact: error: ZeroDivisionError: float division by zero (run with --debug "
+                                       "for the traceback)\n")
+
+    def interrupted(self):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(Analysis, "run", interrupted)
+    assert main(["run", scene, "--csv", str(tmp_path / "r.csv")]) == 130
+    assert capsys.readouterr().err == "camcontact: error: interrupted\n"
+    assert main(["--help"]) == 0 and main(["run", "--help"]) == 0
+    assert main([]) == 2
+    assert capsys.readouterr().err.startswith("camcontact: error: the following arguments are required: command")
+
+
+def test_scene_file_reading_is_bounded(tmp_path):
+    """Regular UTF-8 files of at most MAX_SCENE_BYTES (a UTF-8 byte-order mark is skipped); nesting at most
+    MAX_NESTING; a [sweep] of at most MAX_SWEEP_CASES cases — refused before anything is built."""
+    from camcontact.scene_file import MAX_NESTING, MAX_SCENE_BYTES, MAX_SWEEP_CASES
+
+    bom = tmp_path / "bom.toml"
+    bom.write_bytes(b"\xef\xbb\xbf" + MINIMAL.encode())
+    assert load_scene(bom).kind == "line_contact"
+    latin = tmp_path / "latin.toml"
+    latin.write_bytes(MINIMAL.replace("1 kN", "1 kN  # °").encode("latin-1"))
+    with pytest.raises(InputError, match=r"latin.toml: not UTF-8 text: byte 0xb0 at byte offset \d+ \(line 5\)"):
+        load_scene(latin)
+    big = tmp_path / "big.toml"
+    big.write_bytes(b"#" * (MAX_SCENE_BYTES + 1))
+    with pytest.raises(InputError, match=f"allowed: at most {MAX_SCENE_BYTES}"):
+        load_scene(big)
+    with pytest.raises(InputError, match="is not a regular file"):
+        load_scene("/dev/zero")
+    with pytest.raises(InputError, match="nested too deep"):
+        parse_scene("x = " + "[" * 10_000 + "]" * 10_000)
+    with pytest.raises(InputError, match=f"nested deeper than {MAX_NESTING}"):
+        parse_scene(MINIMAL + "\n[contact.lubricant]\n" + "x = " + "[" * 20 + "]" * 20)
+    grid = "\n[sweep]\n" + "\n".join(f'"body{k}.radius" = [' + ", ".join(['"1 mm"'] * 400) + "]" for k in (1, 2))
+    with pytest.raises(InputError, match=f"makes 1.6e\\+05 cases \\(400 x 400\\); allowed: at most {MAX_SWEEP_CASES}"):
+        parse_scene(MINIMAL.replace("[contact]\n", grid + "\n[contact]\n"))
+
+
+def test_sweep_values_are_checked_one_by_one_up_front():
+    grid = '[sweep]\nload = ["1 kN", "2 mm"]\n'
+    with pytest.raises(InputError, match=r"\[sweep\]: 'load' = '2 mm': LineContact.load = 2 mm: wrong dimension"):
+        parse_scene(MINIMAL.replace("[contact]\n", grid + "[contact]\n"))
+    # a value valid on its own passes (checks across fields are each case's own)
+    grid = '[sweep]\n"body1.radius" = ["5 mm", "50 mm"]\n'
+    assert parse_scene(MINIMAL.replace("[contact]\n", grid + "[contact]\n")).sweep == {"body1.radius": ["5 mm", "50 mm"]}
+
+
+def test_check_report_unit():
+    from camcontact.scene_file import check_report_unit
+
+    check_report_unit("h_min", "nm", "here")
+    check_report_unit("surface_temperature_max", "degF", "here")
+    for unit, message in [("GPa", "has dimension"), ("furlongs_per_nm", "cannot read"), ("10**3 nm", "not a unit expression"),
+                          (3, "allowed: a unit as a string")]:
+        with pytest.raises(InputError, match=f"here: h_min.*{message}"):
+            check_report_unit("h_min", unit, "here")
+    with pytest.raises(InputError, match="here: unknown quantity 'zz'"):
+        check_report_unit("zz", "nm", "here")

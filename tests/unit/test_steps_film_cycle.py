@@ -171,6 +171,7 @@ def test_numerical_film_details_bookkeeping():
     np.testing.assert_array_equal(out["H_min"], [0.2, 0.0, 0.4])
     np.testing.assert_array_equal(out["H_c"], [0.3, 0.0, 0.45])
     assert out["spike_pressure"][0] == 1.4 and out["spike_pressure"][1] == 0.0 and math.isnan(out["spike_pressure"][2])
+    assert list(out["pressure_spike"]) == [True, True, False]  # the NaN's reason beside it
     with pytest.raises(InputError, match="use the film model 'multigrid'"):
         numerical_film_details([None, None])
 
