@@ -325,7 +325,6 @@ class Analysis:
             steps = ", ".join(dict.fromkeys(repr(failed_by[name]) for name in needed))
             reason = f"not run: needs {', '.join(needed)}, which step {steps} could not give"
             return {}, StepFailure(step.name, model, variant, step.provides, reason, skipped=True)
-        foreign = foreign_models(step, graph.inputs)
         start = time.perf_counter()
         try:
             produced = dict(step.run(state))
@@ -336,6 +335,7 @@ class Analysis:
             raise
         except Exception as exc:
             elapsed = time.perf_counter() - start
+            foreign = foreign_models(step, graph.inputs)
             source = "; ".join(describe_model(m) for m in foreign)
             reason = f"{type(exc).__name__}: {exc}"
             if foreign:

@@ -27,6 +27,7 @@ early (``camcontact run | head``: quietly, as a shell reports a SIGPIPE).
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 import traceback
@@ -66,7 +67,7 @@ class _Parser(argparse.ArgumentParser):
 
 def _one_line(message: str) -> str:
     """``message`` on one line: control characters (newlines, escapes) as spaces, cut at MAX_ERROR_TEXT."""
-    text = "".join(ch if ch.isprintable() else " " for ch in message)
+    text = _printable(message, mark=" ")
     if len(text) > MAX_ERROR_TEXT:
         text = f"{text[:MAX_ERROR_TEXT]}... ({len(text) - MAX_ERROR_TEXT} more characters)"
     return text
@@ -153,9 +154,9 @@ def _write(path: Path, option: str, write: Callable[[Path], Any]) -> None:
         raise _OutputError(f"cannot write the {option} file {str(path)!r}: {exc.strerror or exc}") from exc
 
 
-def _printable(text: str) -> str:
-    """``text`` with control characters (terminal escapes, newlines) shown as ``?``."""
-    return "".join(ch if ch.isprintable() else "?" for ch in text)
+def _printable(text: str, mark: str = "?") -> str:
+    """``text`` with control characters (terminal escapes, newlines) shown as ``mark``."""
+    return "".join(ch if ch.isprintable() else mark for ch in text)
 
 
 def _print_before_run(*lines: str) -> bool:
@@ -263,9 +264,7 @@ def _sweep(args: argparse.Namespace) -> int:
         if importlib.util.find_spec("pyarrow") is None:
             raise InputError("--parquet needs pyarrow: install the extra, pip install 'camcontact[parquet]'")
         _check_output(Path(args.parquet), "--parquet")
-    count = 1
-    for values in scene.sweep.values():
-        count *= len(values)
+    count = math.prod(len(values) for values in scene.sweep.values())
     workers = sweeps.worker_count(args.workers, count) if args.workers else 0
     capped = (f"; --workers {args.workers} capped to {workers} ({os.cpu_count() or 1} CPUs, {count} cases)"
               if workers != args.workers else "")

@@ -86,7 +86,7 @@ def result_frame(result: Result, units: Mapping[str, str] | None = None, *, scal
 def _status_cells(result: Result, names: list[str]) -> list[dict[str, Any]]:
     """Per variant: ``not_given`` (the outputs among ``names`` its models do not give, when another variant
     gives them) and ``failed``/``error`` (its failed steps) — columns present only when some row needs them."""
-    failures = getattr(result, "failures", ())
+    failures = result.failures
     failed_outputs = {(f.variant, name) for f in failures for name in f.outputs}
     # not given: an output this variant's models do not give, or one a step gives as None (no value: the
     # lubricant's conductivity when the data sheet has none)

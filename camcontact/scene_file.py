@@ -46,7 +46,6 @@ fields, with nested [contact.cam] (its ``program`` a table of ``segments``), [co
 
 from __future__ import annotations
 
-import math
 import os
 import stat
 import tomllib
@@ -75,7 +74,7 @@ from .components import (
 )
 from .errors import InputError
 from .quantities import spec
-from .sweep_cases import MAX_SWEEP_CASES, check_path
+from .sweep_cases import MAX_SWEEP_CASES, check_case_count, check_path
 from .units import Q_, parse_unit
 
 __all__ = ["DEFAULT_SCENE", "MAX_NESTING", "MAX_SCENE_BYTES", "MAX_SWEEP_CASES", "Scene", "check_report_unit",
@@ -308,10 +307,7 @@ def _sweep(data: Mapping, component: Any, where: str) -> dict[str, list]:
     if not isinstance(sweep, Mapping) or not all(isinstance(v, list) and v for v in sweep.values()):
         raise InputError(f"{where}: [sweep] must be a table of path = [value, ...] (e.g. speed = [\"500 rpm\", "
                          f"\"1000 rpm\"], \"cam.base_radius\" = [\"30 mm\", \"40 mm\"])")
-    cases = math.prod(len(values) for values in sweep.values())
-    if cases > MAX_SWEEP_CASES:
-        raise InputError(f"{where}: [sweep] makes {cases:.3g} cases ({' x '.join(str(len(v)) for v in sweep.values())}"
-                         f"); allowed: at most {MAX_SWEEP_CASES}")
+    check_case_count([len(values) for values in sweep.values()], f"{where}: [sweep]")
     for path, values in sweep.items():
         check_path(component, path)
         for value in values:

@@ -61,8 +61,8 @@ import pint
 from .errors import CamcontactWarning, CaseTimeout, InputError, SweepInterruptedWarning
 from .units import to_quantity, ureg
 
-__all__ = ["MAX_SWEEP_CASES", "TABLES", "CaseAlarm", "case_rows", "cases_of", "check_path", "evolve_path",
-           "finished_cases", "has_index", "run_case", "run_cases", "run_sweep"]
+__all__ = ["MAX_SWEEP_CASES", "TABLES", "CaseAlarm", "case_rows", "cases_of", "check_case_count", "check_path",
+           "evolve_path", "finished_cases", "has_index", "run_case", "run_cases", "run_sweep"]
 
 TABLES = ("auto", "cases", "index")
 #: the largest sweep (cases), checked before any case is built: a bigger grid is an InputError
@@ -97,7 +97,7 @@ def cases_of(grid: Any) -> tuple[list[str], list[tuple]]:
     import pandas as pd
 
     if isinstance(grid, pd.DataFrame):
-        _check_size(len(grid), f"{len(grid)} rows")
+        check_case_count([len(grid)], "sweep grid")
         paths = [str(c) for c in grid.columns]
         cases = [tuple(row) for row in grid.itertuples(index=False, name=None)]
     elif isinstance(grid, Mapping):
@@ -107,9 +107,8 @@ def cases_of(grid: Any) -> tuple[list[str], list[tuple]]:
             entry = grid[path]
             if isinstance(entry, (str, bytes)) or not isinstance(entry, Iterable):
                 raise InputError(f"sweep grid: {path!r} = {entry!r}; give a list of values")
-            values.append(list(itertools.islice(entry, MAX_SWEEP_CASES + 1)))
-            _check_size(len(values[-1]), f"{path!r} has more than {MAX_SWEEP_CASES} values")
-        _check_size(math.prod(len(v) for v in values), " x ".join(str(len(v)) for v in values))
+            values.append(list(itertools.islice(entry, MAX_SWEEP_CASES + 1)))  # a longer one is refused below
+        check_case_count([len(v) for v in values], "sweep grid")
         cases = list(itertools.product(*values))
     else:
         raise InputError(f"sweep grid: expected a mapping {{path: [values]}} or a DataFrame of cases, got "
@@ -119,10 +118,13 @@ def cases_of(grid: Any) -> tuple[list[str], list[tuple]]:
     return paths, cases
 
 
-def _check_size(cases: int, how: str) -> None:
+def check_case_count(lengths: Sequence[int], where: str) -> None:
+    """InputError naming ``where`` when the cartesian product of value lists of these ``lengths`` (or a
+    table of that many rows) makes more than :data:`MAX_SWEEP_CASES` cases."""
+    cases = math.prod(lengths)
     if cases > MAX_SWEEP_CASES:
-        raise InputError(f"sweep grid: {cases:.3g} cases ({how}); allowed: at most {MAX_SWEEP_CASES} "
-                         "(split the study into several sweeps)")
+        raise InputError(f"{where} makes {cases:.3g} cases ({' x '.join(map(str, lengths))}); allowed: at most "
+                         f"{MAX_SWEEP_CASES} (split the study into several sweeps)")
 
 
 def _parameter_columns(paths: Sequence[str], cases: Sequence[tuple]) -> list[tuple[str, Any]]:

@@ -132,3 +132,18 @@ def test_degrees_celsius_and_compound_units_parse():
     typed = to_pint_frame(pd.DataFrame({"T [°C]": [20.0], "eta0 [mPa·s]": [3.0], "alpha [1/GPa]": [20.0]}))
     assert typed["eta0"].pint.to("Pa*s").pint.magnitude[0] == pytest.approx(3e-3)
     assert math.isclose(typed["alpha"].pint.to("1/Pa").pint.magnitude[0], 2e-8)
+
+
+def test_a_grid_of_more_than_max_sweep_cases_is_refused_before_any_case_is_built():
+    """MAX_SWEEP_CASES = 100 000: a 1000 x 1000 grid, an endless iterable (read at most 100 001 values) and a
+    DataFrame of 100 001 rows are InputErrors before anything is allocated or run."""
+    from camcontact.sweep_cases import MAX_SWEEP_CASES, cases_of
+
+    assert MAX_SWEEP_CASES == 100_000
+    with pytest.raises(InputError, match=r"sweep grid makes 1e\+06 cases \(1000 x 1000\); allowed: at most 100000"):
+        cases_of({"load": ["1 kN"] * 1000, "length": ["1 mm"] * 1000})
+    with pytest.raises(InputError, match=r"sweep grid makes 1e\+05 cases \(100001\); allowed: at most 100000"):
+        cases_of({"load": iter(int, 1)})  # never ends
+    with pytest.raises(InputError, match=r"\(100001\); allowed"):
+        cases_of(pd.DataFrame({"load": np.ones(100_001)}))
+    assert len(cases_of({"load": ["1 kN"] * 100, "length": ["1 mm"] * 1000})[1]) == 100_000
