@@ -374,7 +374,8 @@ def traction_rows(level: int, repeats: int) -> pd.DataFrame:
     steel = cc.Material(E="207 GPa", nu=0.3, density="7850 kg/m^3", specific_heat="460 J/kg/K",
                         thermal_conductivity="47 W/m/K")
     fluid = cc.Lubricant(name="traction fluid", nu40="30 cSt", nu100="5.5 cSt", density="0.90 g/cm^3",
-                         alpha="2.5e-8 1/Pa", thermal_conductivity="0.11 W/m/K")
+                         alpha="2.5e-8 1/Pa", thermal_conductivity="0.11 W/m/K",
+                         limiting_shear_slope=0.088)  # a traction fluid's Lambda_L (5P4E, Bair & Winer 1979)
     cvt = cc.BallConeCVT(cone_angle="30 deg", cone_contact_radius="24 mm", ball_diameter="14 mm", ball_count=9,
                          tilt_max="30 deg", cam_ramp_angle="10 deg", cam_radius="6 mm", cam_ball_count=5,
                          material=steel, traction_coefficient=0.1, lubricant=fluid, roughness="0.1 um")

@@ -34,7 +34,8 @@ def _q(name: str, si_unit: str | None, display_unit: str | None, description: st
 _UNLOADED = (("loaded", False), ("contact_regime", "unloaded"))
 _NAN_WHEN = {
     **{f"{q}_{race}": _UNLOADED for q in ("b", "p_h", "h_c", "h_min", "Lambda", "flash_temperature",
-                                          "rolling_resistance") for race in ("inner", "outer")},
+                                          "rolling_resistance", "asperity_load_fraction", "h_c_mixed")
+       for race in ("inner", "outer")},
     # a cam follower that has left the cam (contact_open) has no contact, so no film
     **{q: (("contact_open", True),) for q in ("h_c", "h_min", "Lambda_c", "Lambda_min", "h_c_isothermal",
                                               "h_min_isothermal")},
@@ -56,6 +57,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("w", "N/m", "N/mm", "load per unit length"),
         _q("u_m", "m/s", "m/s", "entrainment speed (u1 + u2)/2"),
         _q("u_s", "m/s", "m/s", "sliding speed u1 - u2"),
+        _q("u1", "m/s", "m/s", "surface speed of body 1 (bearing: the ring at a raceway contact)"),
+        _q("u2", "m/s", "m/s", "surface speed of body 2 (bearing: the roller at a raceway contact)"),
         _q("slide_roll_ratio", "", "", "slide-to-roll ratio (u1 - u2)/u_m"),
         _q("b", "m", "um", "Hertz half-width"),
         _q("p_h", "Pa", "MPa", "Hertz maximum pressure"),
@@ -209,10 +212,19 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("a_ISO", "", "", "life modification factor (ISO 281, radial roller bearings)"),
         _q("L_nm", "", "", "modified rating life [revolutions]"),
         _q("L_nmh", "s", "h", "modified rating life in operating hours"),
-        _q("friction_coefficient_inner", "", "", "Kelley friction coefficient at the inner raceway"),
-        _q("friction_coefficient_outer", "", "", "Kelley friction coefficient at the outer raceway"),
-        _q("friction_valid_inner", None, None, "True where the inner contact is inside the Kelley validity ranges"),
-        _q("friction_valid_outer", None, None, "True where the outer contact is inside the Kelley validity ranges"),
+        _q("friction_coefficient_inner", "", "", "friction coefficient at the inner raceway (fluid traction, with "
+                                                 "mixed + boundary; or Kelley)"),
+        _q("friction_coefficient_outer", "", "", "friction coefficient at the outer raceway (fluid traction, with "
+                                                 "mixed + boundary; or Kelley)"),
+        _q("friction_valid_inner", None, None, "True where the inner contact's friction model is inside its validity"),
+        _q("friction_valid_outer", None, None, "True where the outer contact's friction model is inside its validity"),
+        *(_q(f"{q}_{race}", unit, display, f"{text} at the {race} raceway")
+          for race in ("inner", "outer")
+          for q, unit, display, text in (
+              ("asperity_load_fraction", "", "", "share of the roller load the asperities carry (Greenwood-Tripp)"),
+              ("h_c_mixed", "m", "um", "central film at the fluid's share of the load"),
+              ("lubrication_regime", None, None, "boundary, mixed or full_film (unloaded: no contact)"),
+              ("mixed_valid", None, None, "True where the load-sharing model can reach the boundary regime"))),
         _q("flash_temperature_inner", "K", "K", "flash temperature at the inner raceway"),
         _q("flash_temperature_outer", "K", "K", "flash temperature at the outer raceway"),
         _q("friction_moment_skf", "N*m", "N*m", "bearing frictional moment, SKF model (open bearing, no drag)"),

@@ -182,6 +182,25 @@ print(pd.concat(reports).T.to_string())
 # an equivalent friction coefficient 2M/(F_r d) of about 0.002, the catalogue value for spherical
 # roller bearings; they do not depend on the assumed slip.
 
+# %% [markdown]
+# The raceway friction can take the film's thermal and mixed effects: `thermal` thins every film by the
+# inlet shear-heating factor phi_T (it needs the oil's thermal conductivity: 0.13 W/(m K) assumed here) and
+# heats the traction; `mixed` gives each contact's asperity share (Greenwood–Tripp, default asperity
+# parameters) and adds the asperities' boundary friction.
+
+# %%
+oil_11 = attrs.evolve(greases["NH1 11-572"], thermal_conductivity="0.13 W/(m K)")  # conductivity assumed
+scene = cc.LoadedBearing(bearing=bearing, radial_load=f"{radial} N", outer_speed="300 rpm", lubricant=oil_11,
+                         temperature="85 degC", contamination=0.3, slide_roll_ratio=0.02)
+rows = {}
+for label, extra in {"isothermal": set(), "thermal": {"thermal"}, "thermal + mixed": {"thermal", "mixed"}}.items():
+    result = cc.Analysis(scene, effects={"elasticity", "piezoviscosity", "compressibility"} | extra).run()
+    share = np.asarray(result["asperity_load_fraction_inner"]) if "mixed" in extra else np.array([0.0])
+    rows[label] = {"phi_T": result["thermal_factor"] if extra else 1.0,
+                   "h_min_bearing [um]": result["h_min_bearing"] * 1e6,
+                   "asperity share max [%]": 100 * np.nanmax(share), "friction_power [W]": result["friction_power"]}
+print(pd.DataFrame(rows).T.to_string(float_format="{:.4g}".format))
+
 # %%
 loads = np.geomspace(50e3, 1500e3, 12)
 curves = {}

@@ -40,8 +40,10 @@ pd.set_option("display.width", 160)
 # spin) and the Mohr maximum shear (Eq. 3.71) for tau0 of the life model
 THESIS = {"traction": Fastsim(pressure="hertz"), "stress": "max_shear"}
 steel = cc.Material(name="bearing steel", E="207 GPa", nu=0.3)
+# a traction fluid's limiting shear stress rises faster with pressure than a mineral oil's: Lambda_L = 0.088 as
+# Bair & Winer (1979) measured for the high-traction polyphenyl ether 5P4E (mineral oil LVI 260: 0.047)
 fluid = cc.Lubricant(name="traction fluid (assumed: 30/5.5 cSt, alpha 25/GPa)", nu40="30 cSt", nu100="5.5 cSt",
-                     density="0.90 g/cm^3", alpha="2.5e-8 1/Pa")
+                     density="0.90 g/cm^3", alpha="2.5e-8 1/Pa", limiting_shear_slope=0.088)
 forti = cc.BallConeCVT(
     name="Forti TrackBall", cone_angle="30 deg", cone_contact_radius="24 mm", cone_small_diameter="42 mm",
     ball_diameter="14 mm", ball_count=9, tilt_max="30 deg", cam_ramp_angle="10 deg", cam_radius="6 mm",

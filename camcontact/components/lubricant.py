@@ -165,7 +165,7 @@ class Lubricant(Component):
         τ_L0 [pressure] (>= 0) of the limiting shear stress τ_L = τ_L0 + Λ_L p (Bair & Winer 1979);
         default: the traction model's (0).
     limiting_shear_slope : float, optional
-        Λ_L [-] (0 <= Λ_L <= 0.3); default: the traction model's (0.075).
+        Λ_L [-] (0 <= Λ_L <= 0.3); default: the traction model's (0.047, a paraffinic mineral oil: Höglund 1999).
     boundary_friction : float
         Friction coefficient of the asperity contacts under this lubricant's boundary films, for the
         ``mixed`` effect (0 <= μ_b <= 1). Default 0.12: measured asperity friction of steel line contacts

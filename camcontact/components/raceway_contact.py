@@ -63,6 +63,10 @@ class RacewayContact(Component):
         The thesis's temperature loop input (its "initial estimate" of Lambda): the loop lowers
         the temperature in 0.1 K steps, starting one step below ``temperature``, until Lambda
         exceeds it. Default 0 (one step: the thesis's 84.9 °C from 85 °C).
+    asperity_density, asperity_radius : Quantity or str, optional
+        Summit density η [1/length²] and radius β [length] (> 0) of the composite roughness of the raceway
+        contact for the ``mixed`` effect (Greenwood–Tripp), as :class:`~camcontact.components.LineContact`'s
+        (defaults there: η β σ = σ/β = 0.05, orders of magnitude, not data).
     name : str
     """
 
@@ -83,6 +87,8 @@ class RacewayContact(Component):
     temperature: Quantity = quantity_field("[temperature]", validators=[above_absolute_zero()])
     slide_roll_ratio: float = number_field(default=0.0, validators=[in_range(0.0, 2.0, upper_inclusive=False)])
     lambda_min: float = number_field(default=0.0, validators=[in_range(0.0)])
+    asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
+    asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
     def __attrs_post_init__(self) -> None:
         if self.raceway == "outer" and not self.si.raceway_radius > self.si.roller_radius:

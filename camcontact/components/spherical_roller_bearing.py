@@ -86,6 +86,10 @@ class SphericalRollerBearing(Component):
         Dimension series as the SKF friction model names it (e.g. "240" for a 24040 CC/W33, "222 E" for a
         22220 E); one of :data:`camcontact.models.bearing_friction.SKF_SERIES`. Needed by the SKF
         frictional moment only.
+    asperity_density, asperity_radius : Quantity or str, optional
+        Summit density η [1/length²] and radius β [length] (> 0) of the composite roughness of the raceway
+        contact for the ``mixed`` effect (Greenwood–Tripp), as :class:`~camcontact.components.LineContact`'s
+        (defaults there: η β σ = σ/β = 0.05, orders of magnitude, not data).
     name : str
     """
 
@@ -109,6 +113,8 @@ class SphericalRollerBearing(Component):
     material: Material | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Material)))
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
     series: str | None = attrs.field(default=None, validator=_series)
+    asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
+    asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
     def __attrs_post_init__(self) -> None:
         si, where = self.si, f"SphericalRollerBearing {self.designation!r}"

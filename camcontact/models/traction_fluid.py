@@ -27,8 +27,11 @@ Default parameters and their sources (``[Pa]`` SI):
   in disc-machine traction by Johnson & Tevaarwerk (1977) (as quoted in the project reference
   ``friction_traction_thermal.md`` §3; the paper's tau0 rises with temperature and pressure, a constant is
   the simplification).
-* ``limiting_shear_slope`` Lambda_L = 0.075: the middle of the 0.07–0.08 quoted for mineral oils after
-  Bair & Winer (1979) and Höglund; the reference gives 0.03–0.1 (traction fluids at the high end).
+* ``limiting_shear_slope`` Lambda_L = 0.047: measured for a paraffinic mineral oil (M100, ISO VG 100) by
+  Höglund (1999, Wear 232:176–184), as tabulated by Arana, Larrañaga & Ulacia (2019, Proc. IMechE J
+  233:303–316, Table 2: naphthenic N100 0.053, PAO100 0.035, a polyglycol 0.044), and Bair & Winer's (1979)
+  0.047 for the mineral oil LVI 260 (5P4E: 0.088). The project reference's 0.03–0.1 spans these; an earlier
+  default of 0.075 had no measured source.
 * ``limiting_shear_stress`` tau_L0 = 0 (Bair & Winer's form through the origin).
 
 These defaults are orders of magnitude for a mineral oil, not data of a particular fluid: give the
@@ -59,8 +62,8 @@ __all__ = ["EYRING_STRESS", "LIMITING_SHEAR_SLOPE", "LIMITING_SHEAR_STRESS", "Ey
 
 #: tau0 [Pa]: middle of the 2–10 MPa of Johnson & Tevaarwerk (1977) for mineral oils (see the module docstring)
 EYRING_STRESS = 5.0e6
-#: Lambda_L [-]: middle of 0.07–0.08 for mineral oils after Bair & Winer (1979) / Höglund
-LIMITING_SHEAR_SLOPE = 0.075
+#: Lambda_L [-]: a paraffinic mineral oil, Höglund (1999) / Bair & Winer (1979) (see the module docstring)
+LIMITING_SHEAR_SLOPE = 0.047
 #: tau_L0 [Pa]
 LIMITING_SHEAR_STRESS = 0.0
 
@@ -224,7 +227,7 @@ class NewtonianTraction(_FluidTraction):
     limiting_shear_stress : float
         tau_L0 [Pa] >= 0 (default 0).
     limiting_shear_slope : float or None
-        Lambda_L [-], 0..1 (default 0.075); None: a purely Newtonian film (mu grows with eta(p) without bound).
+        Lambda_L [-], 0..1 (default 0.047); None: a purely Newtonian film (mu grows with eta(p) without bound).
     geometry : {"line", "point"}
         Hertz pressure shape (default "line").
     thermal : bool

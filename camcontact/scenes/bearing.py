@@ -38,6 +38,16 @@ A :class:`~camcontact.components.LoadedBearing` becomes the steps
     ISO 281: P, L10 and L10h; L_nm with a1, kappa and a_ISO (model slot ``life``, default
     ``"iso281"``; needs the lubricant, the fatigue load limit and the contamination factor).
 
+Effects: ``elasticity``, ``piezoviscosity`` and ``compressibility`` (on by default) as the line scene;
+``thermal``: the inlet shear-heating reduction phi_T of every raceway film (Delabenetta 2021 Eq. 44, the
+Wilson–Sheu slide/roll form, at the scene's slide/roll ratio; needs the lubricant's thermal conductivity and
+temperature-dependent viscosity: ``thermal_loading``, ``thermal_factor``) and the contact temperature rise of
+the fluid traction (needs the material's thermal data); ``mixed``: Greenwood–Tripp asperity load sharing at
+each raceway contact of every roller on its film (``asperity_load_fraction_<race>``, ``h_c_mixed_<race>``,
+``lubrication_regime_<race>``, ``mixed_valid_<race>``; asperity parameters
+``SphericalRollerBearing.asperity_density`` / ``asperity_radius`` or the orders-of-magnitude defaults), and
+the fluid friction gains the asperities' boundary friction mu_b f_a + mu_fluid (1 - f_a).
+
 Per-roller outputs are arrays over the index ``roller`` (rows x Z, row by row); unloaded rollers
 have no contact: their Hertz and film values are NaN with ``contact_regime`` "unloaded". Only the
 steps the requested outputs need run.
@@ -58,11 +68,12 @@ from ..models.bearing_friction import SKF_SERIES
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.bearing_friction import palmgren_friction_moment, roller_rolling_resistance, skf_friction_moment
 from ..steps.contact import RACES, roller_hertz
-from ..steps.film import bearing_lubrication, film_parameter, films_of, resolve_film_model, roller_films
+from ..steps.ehl_friction import ROLLER_MIXED_OUTPUTS, ehl_friction_inputs, fluid_traction_model, roller_mixed
+from ..steps.film import (bearing_lubrication, film_parameter, films_of, inlet_thermal_correction, resolve_film_model,
+                          roller_films, roller_thermal_films)
 from ..steps.forces import load_distribution
-from ..steps.ehl_friction import fluid_traction_model
 from ..steps.friction import roller_fluid_friction, roller_friction
-from ..steps.kinematics import bearing_kinematics
+from ..steps.kinematics import bearing_kinematics, bearing_surface_speeds
 from ..steps.life import bearing_equivalent_load, modified_rating_life, rating_life
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import most_loaded_subsurface
@@ -70,14 +81,18 @@ from .bearing_plots import plot_bearing
 
 __all__ = ["build_bearing", "bearing_inputs"]
 
-SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
-DEFAULT_EFFECTS = SUPPORTED_EFFECTS
+SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility", "thermal", "mixed"})
+DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
 PER_ROLLER = frozenset({
     "roller_row", "azimuth", "Q", "loaded", "roller_approach",
     *(f"{q}_{race}" for q in ("b", "p_h", "h_c", "h_min", "Lambda", "friction_coefficient", "friction_valid",
                               "flash_temperature", "rolling_resistance")
-      for race in RACES), "contact_regime",
+      for race in RACES), "contact_regime", *ROLLER_MIXED_OUTPUTS,
 })
+#: what the effects add to the default report
+EFFECT_OUTPUTS = {"thermal": ("thermal_factor",),
+                  "mixed": tuple(f"{q}_{race}" for q in ("asperity_load_fraction", "lubrication_regime")
+                                 for race in RACES)}
 DEFAULT_OUTPUTS = (
     "roller_row", "azimuth", "Q", "loaded", "b_inner", "p_h_inner", "b_outer", "p_h_outer", "h_min_inner", "h_min_outer",
     "Lambda_inner", "Lambda_outer", "contact_regime", "friction_coefficient_inner", "friction_coefficient_outer",
@@ -100,6 +115,8 @@ HINTS = {
                       f"{', '.join(SKF_SERIES)}; e.g. '240' for a 24040)",
     "lubrication": "set LoadedBearing.lubricant (its form, grease or oil, sets the lubrication method)",
     "base_oil": "set LoadedBearing.lubricant (its base oil sets the SKF model's mu_EHL)",
+    "asperity_density": "give SphericalRollerBearing.asperity_density and asperity_radius (the defaults need a "
+                        "roughness > 0)",
 }
 
 
@@ -133,11 +150,28 @@ def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
                           base_oil=getattr(scene.lubricant, "base_oil", None))
 
 
-def friction_step(choice: Any) -> Step:
+def film_steps(film_model: Any, thermal: bool) -> list[Step]:
+    """The films of every roller at both raceways and, with ``thermal``, their inlet shear-heating reduction
+    phi_T (Wilson & Sheu's slide/roll form as Delabenetta Eq. 44; one factor for both races: same speeds, same
+    oil) on the isothermal films."""
+    films = (*(f"{q}_{race}" for q in films_of(film_model) for race in RACES), "h_min_bearing")
+    if not thermal:
+        return [Step.of(roller_films, provides=films)]
+    isothermal = tuple(f"{q}_isothermal" for q in films)
+    return [Step.of(roller_films, provides=films, rename=dict(zip(films, isothermal))),
+            Step.of(bearing_surface_speeds, optional=("slide_roll_ratio",)), Step.of(inlet_thermal_correction),
+            Step.of(roller_thermal_films, extra=isothermal, provides=films)]
+
+
+def friction_step(choice: Any, mixed: bool) -> Step:
     """The raceway contacts' friction: the film's fluid traction (default: Eyring with the limiting shear stress,
-    or the ``traction_models`` model given) or, with ``models={"friction": "kelley"}``, the Benedict–Kelley
-    correlation of Delabenetta (2021) Eq. 49, which rises as the slip falls (valid for 1 %-200 % slide/roll)."""
-    return Step.of(roller_friction if choice == "kelley" else roller_fluid_friction)
+    or the ``traction_models`` model given; with ``mixed`` plus the asperities' boundary friction on their share)
+    or, with ``models={"friction": "kelley"}``, the Benedict–Kelley correlation of Delabenetta (2021) Eq. 49, which
+    rises as the slip falls (valid for 1 %-200 % slide/roll)."""
+    if choice == "kelley":
+        return Step.of(roller_friction)
+    reads = (*(f"{q}_{race}" for q in ("asperity_load_fraction", "h_c_mixed") for race in RACES), "boundary_friction")
+    return Step.of(roller_fluid_friction, extra=reads if mixed else ())
 
 
 def moment_steps(scene: LoadedBearing) -> list[Step]:
@@ -150,28 +184,42 @@ def moment_steps(scene: LoadedBearing) -> list[Step]:
     return [Step.of(skf_friction_moment), Step.of(palmgren_friction_moment)] if known else []
 
 
+def friction_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
+    """The boundary friction and, with ``mixed``, the asperity parameters of the raceway contacts
+    (:func:`camcontact.steps.ehl_friction.ehl_friction_inputs`; both surfaces of the bearing's roughness)."""
+    if "mixed" not in effects:
+        return {}
+    bearing = scene.bearing
+    roughness = bearing.si.roughness
+    return ehl_friction_inputs(scene.lubricant, (), (roughness, roughness), effects,
+                               asperity_density=bearing.si.asperity_density, asperity_radius=bearing.si.asperity_radius)
+
+
 @scene_builder(LoadedBearing)
 def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: frozenset | None) -> SceneGraph:
     """Scene graph of a :class:`~camcontact.components.LoadedBearing` (one variant)."""
     effects = checked_request("bearing", models, effects, slots=("film", "life", "friction"),
                               supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
     film_model = resolve_film_model(models.get("film", "pan_hamrock"), effects=effects)
-    films = films_of(film_model)
-    basis = "h_min" if "h_min" in films else "h_c"
+    basis = "h_min" if "h_min" in films_of(film_model) else "h_c"
+    mixed = "mixed" in effects
     steps = [
         Step.of(load_distribution), Step.of(bearing_kinematics), Step.of(roller_hertz),
         Step.of(most_loaded_subsurface),
-        lubricant_step(scene.lubricant, scene.si.temperature),
-        Step.of(roller_films, provides=(*(f"{q}_{race}" for q in films for race in RACES), "h_min_bearing")),
+        lubricant_step(scene.lubricant, scene.si.temperature), *film_steps(film_model, "thermal" in effects),
         *(Step.of(film_parameter, name=f"lambda_{race}", rename={"h": f"{basis}_{race}", "sigma1": "sigma",
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{race}"})
           for race in RACES),
-        Step.of(bearing_lubrication), friction_step(models.get("friction")), Step.of(bearing_equivalent_load),
+        *([Step.of(roller_mixed)] if mixed else []),
+        Step.of(bearing_lubrication), friction_step(models.get("friction"), mixed), Step.of(bearing_equivalent_load),
         Step.of(rating_life), Step.of(modified_rating_life), *moment_steps(scene), Step.of(roller_rolling_resistance),
     ]
     inputs = {**bearing_inputs(scene, effects), "film_model": film_model, "life_model": models.get("life", "iso281"),
               "traction_model": fluid_traction_model(scene.lubricant, effects | {"non_newtonian"},
-                                                     None if models.get("friction") == "kelley" else models.get("friction"))}
+                                                     None if models.get("friction") == "kelley" else models.get("friction")),
+              **friction_inputs(scene, effects)}
     per_index = frozenset(PER_ROLLER & {o for step in steps for o in step.provides})
-    return SceneGraph(kind="bearing", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS,
-                      input_hints=HINTS, plotter=plot_bearing, effects=effects, index="roller", per_index=per_index)
+    added = tuple(q for effect in sorted(effects & EFFECT_OUTPUTS.keys()) for q in EFFECT_OUTPUTS[effect])
+    return SceneGraph(kind="bearing", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS + added,
+                      input_hints=HINTS, plotter=plot_bearing, effects=effects, index="roller", per_index=per_index,
+                      effect_outputs=frozenset(added))

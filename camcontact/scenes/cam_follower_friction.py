@@ -47,8 +47,9 @@ def effect_outputs(effects: frozenset) -> tuple[str, ...]:
 
 def friction_inputs(scene: CamFollower, effects: frozenset) -> dict[str, Any]:
     """The graph inputs of the EHL friction (:func:`camcontact.steps.ehl_friction.ehl_friction_inputs`)."""
-    return ehl_friction_inputs(scene.lubricant, scene.cam, scene.follower, effects,
-                               asperity_density=scene.si.asperity_density, asperity_radius=scene.si.asperity_radius)
+    bodies = (scene.cam, scene.follower)
+    return ehl_friction_inputs(scene.lubricant, tuple(b.material for b in bodies), tuple(b.si.roughness for b in bodies),
+                               effects, asperity_density=scene.si.asperity_density, asperity_radius=scene.si.asperity_radius)
 
 
 def friction_steps(scene: CamFollower, friction: SlotModel, chosen: Mapping[str, Any], effects: frozenset,

@@ -127,7 +127,9 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
              lubricant_step(contact.lubricant, contact.si.temperature), *film_steps(film_model, "thermal" in effects)]
     traction = fluid_traction_model(contact.lubricant, effects, models.get("traction"))
     asked = (MIXED_OUTPUTS if "mixed" in effects else ()) + (FRICTION_OUTPUTS if effects & EHL_EFFECTS else ())
-    friction = ehl_friction_inputs(contact.lubricant, contact.body1, contact.body2, effects,
+    bodies = (contact.body1, contact.body2)
+    friction = ehl_friction_inputs(contact.lubricant, tuple(b.material for b in bodies),
+                                   tuple(b.si.roughness for b in bodies), effects,
                                    asperity_density=contact.si.asperity_density,
                                    asperity_radius=contact.si.asperity_radius)
     return SceneGraph(

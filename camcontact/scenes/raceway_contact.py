@@ -33,9 +33,21 @@ A :class:`~camcontact.components.RacewayContact` becomes the steps
 ``checks``
     the plastic-deformation and fatigue rules of the thesis's §4.1 (or Tresca).
 
-Model slot ``convention``: ``"thesis"`` (default), ``"corrected"`` or a
+Model slots: ``convention``: ``"thesis"`` (default), ``"corrected"`` or a
 :class:`~camcontact.scenes.raceway_conventions.RacewayConvention`; a list runs them side by side
-(one row each). Source: ../shared/reference/spherical_roller_bearing_delabenetta2021.md.
+(one row each). ``traction``: the fluid's rheology of the EHL friction (a ``traction_models`` name or
+model; default ``"eyring"`` with ``non_newtonian``, else ``"newtonian"``, both bounded by the limiting
+shear stress: :func:`camcontact.steps.ehl_friction.fluid_traction_model`).
+
+Effects (none by default: the chain is the thesis's): ``non_newtonian`` and ``mixed`` replace the
+Benedict–Kelley correlation by the EHL friction of the film (as the line-contact scene:
+:func:`camcontact.steps.ehl_friction.contact_ehl_friction` at the sliding speed u_raceway - u_roller, over
+the Hertz pressure with the corrected central film h_oc, the lubricant at the chain's working temperature);
+``mixed`` adds Greenwood–Tripp asperity load sharing on h_oc (the asperities' share, the film at the
+fluid's share, the lubrication regime, the boundary friction of the asperities); the flash temperature and
+the lubricant's temperatures then follow the EHL friction coefficient. ``thermal`` makes the traction
+thermal (its contact temperature rise; needs ``non_newtonian`` or ``mixed``: the chain always applies its
+inlet-heating factor, Eq. 44). Source: ../shared/reference/spherical_roller_bearing_delabenetta2021.md.
 """
 
 from __future__ import annotations
@@ -48,10 +60,12 @@ from ..components.raceway_contact import RacewayContact
 from ..errors import InputError
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import force_hertz, raceway_geometry
+from ..steps.ehl_friction import (EHL_EFFECTS, MIXED_FRICTION_READS, contact_ehl_friction, ehl_friction_inputs,
+                                  fluid_traction_model, mixed_contact)
 from ..steps.film import raceway_roughness
 from ..steps.friction import raceway_kelley_friction
-from ..steps.kinematics import given_raceway_speeds, pure_rolling_raceway
-from ..steps.raceway_film import raceway_film_chain, thesis_temperature_loop
+from ..steps.kinematics import given_raceway_speeds, pure_rolling_raceway, raceway_sliding_speed
+from ..steps.raceway_film import raceway_film_chain, raceway_lubricant_state, thesis_temperature_loop
 from ..steps.stress import (
     raceway_checks,
     raceway_subsurface,
@@ -64,7 +78,10 @@ from .raceway_contact_plots import plot_raceway_contact
 from .raceway_conventions import resolve_convention
 
 # roughness_stress and thesis_temperature_loop stay importable here: the scene's public functions
-__all__ = ["build_raceway_contact", "raceway_contact_inputs", "roughness_stress", "thesis_temperature_loop"]
+__all__ = ["SUPPORTED_EFFECTS", "build_raceway_contact", "raceway_contact_inputs", "roughness_stress",
+           "thesis_temperature_loop"]
+
+SUPPORTED_EFFECTS = frozenset({"mixed", "non_newtonian", "thermal"})
 
 DEFAULT_OUTPUTS = (
     # Table 7 (Hertz, stresses)
@@ -80,11 +97,19 @@ DEFAULT_OUTPUTS = (
     "surface_temperature_max", "viscosity_at_mean_pressure", "film_temperature_rise", "lubricant_temperature_max",
     "lubricant_temperature_check", "yield_check", "fatigue_check",
 )
+#: the outputs the EHL friction effects add (``friction_coefficient`` and ``friction_valid`` then come from them)
+EHL_OUTPUTS = ("friction_per_length", "friction_power_per_length", "fluid_traction_coefficient", "traction_regime",
+               "traction_temperature_rise")
+MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "mixed_valid")
+#: the EHL friction step under the chain's names: its film is the corrected h_oc, its coefficient the scene's
+EHL_NAMES = {"h_c": "h_c_corrected", "traction_coefficient": "friction_coefficient", "traction_valid": "friction_valid"}
 HINTS = {
     "effusivity": "give density, specific_heat and thermal_conductivity of both materials (flash temperature)",
     "yield_strength": "give RacewayContact.raceway_material.yield_strength",
     "roughness_wavelength": "give RacewayContact.roughness_wavelength (roughness stress)",
     "roller_speed": "give RacewayContact.roller_speed (this convention does not derive the rolling speed)",
+    "asperity_density": "give RacewayContact.asperity_density and asperity_radius (the defaults need a composite "
+                        "roughness sigma > 0)",
 }
 
 
@@ -109,21 +134,54 @@ def raceway_contact_inputs(contact: RacewayContact) -> dict[str, Any]:
     return inputs
 
 
+def friction_steps(effects: frozenset, thermal_traction: bool) -> list[Step]:
+    """The friction of the contact: Benedict–Kelley (Eq. 49, the thesis's), or with ``non_newtonian`` /
+    ``mixed`` the EHL friction of the film (and the asperity load sharing)."""
+    if not effects & EHL_EFFECTS:
+        return [Step.of(raceway_kelley_friction)]
+    reads = (MIXED_FRICTION_READS if "mixed" in effects else ()) + (("effusivity",) if thermal_traction else ())
+    mixed = [Step.of(mixed_contact, rename={"alpha_effective": "alpha", "h_c": "h_c_corrected"})]
+    return [Step.of(raceway_sliding_speed), Step.of(raceway_lubricant_state),
+            *(mixed if "mixed" in effects else []), Step.of(contact_ehl_friction, rename=EHL_NAMES, extra=reads)]
+
+
+def default_outputs(effects: frozenset) -> tuple[str, ...]:
+    """The thesis's tables, with the EHL friction's outputs in place of Kelley's validity text."""
+    if not effects & EHL_EFFECTS:
+        return DEFAULT_OUTPUTS
+    added = EHL_OUTPUTS + (MIXED_OUTPUTS if "mixed" in effects else ())
+    return tuple(q for q in DEFAULT_OUTPUTS if q != "friction_validity") + added
+
+
 @scene_builder(RacewayContact)
 def build_raceway_contact(contact: RacewayContact, *, models: Mapping[str, Any],
                           effects: frozenset | None) -> SceneGraph:
     """Scene graph of a :class:`~camcontact.components.RacewayContact` (one variant)."""
-    checked_request("raceway_contact", models, effects, slots=("convention",), supported=(), default=())
+    effects = checked_request("raceway_contact", models, effects, slots=("convention", "traction"),
+                              supported=SUPPORTED_EFFECTS, default=())
+    if "thermal" in effects and not effects & EHL_EFFECTS:
+        raise InputError("raceway_contact scene: the 'thermal' effect makes the EHL friction's traction thermal and "
+                         "needs 'non_newtonian' or 'mixed' with it (the chain always applies its inlet-heating "
+                         "factor, Delabenetta Eq. 44)")
     convention = resolve_convention(models.get("convention", "thesis"))
+    ehl = bool(effects & EHL_EFFECTS)
+    traction = fluid_traction_model(contact.lubricant, effects, models.get("traction")) if ehl else None
     steps = [
         Step.of(raceway_geometry),
         Step.of(pure_rolling_raceway if convention.derive_rolling_speed else given_raceway_speeds),
         Step.of(force_hertz), Step.of(raceway_subsurface), Step.of(raceway_roughness), Step.of(roughness_stress_step),
         Step.of(roughness_full_contact_pressure),
-        Step.of(raceway_film_chain), Step.of(raceway_kelley_friction), Step.of(raceway_temperatures),
+        Step.of(raceway_film_chain), *friction_steps(effects, ehl and traction.thermal), Step.of(raceway_temperatures),
         Step.of(raceway_checks),
     ]
     concave = contact.raceway == "outer" and not convention.convex_raceway
-    inputs = {**raceway_contact_inputs(contact), "convention": convention, "concave": concave}
-    return SceneGraph(kind="raceway_contact", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS,
-                      input_hints=HINTS, plotter=plot_raceway_contact, effects=frozenset())
+    friction = ehl_friction_inputs(contact.lubricant, (contact.raceway_material, contact.roller_material),
+                                   (contact.si.raceway_roughness, contact.si.roller_roughness), effects,
+                                   asperity_density=contact.si.asperity_density,
+                                   asperity_radius=contact.si.asperity_radius) if ehl else {}
+    inputs = {**raceway_contact_inputs(contact), "convention": convention, "concave": concave,
+              **({"piezoviscosity": True, "traction_model": traction, **friction} if ehl else {})}
+    asked = default_outputs(effects)
+    return SceneGraph(kind="raceway_contact", inputs=inputs, steps=tuple(steps), default_outputs=asked,
+                      input_hints=HINTS, plotter=plot_raceway_contact, effects=effects,
+                      effect_outputs=frozenset(asked) - frozenset(DEFAULT_OUTPUTS))

@@ -22,9 +22,11 @@ from ..errors import InputError
 from ..models.film_line import Moes
 from ..models.mixed_lubrication import mixed_line_contact
 from ..step_graph import step
+from .contact import RACES
 
 __all__ = ["ASPERITY_DEFAULTS", "EHL_EFFECTS", "FLUID_TRACTION_LIMIT", "MIXED_FRICTION_READS", "contact_ehl_friction", "ehl_friction_inputs",
-           "ehl_sliding_friction", "fluid_traction_model", "fluid_traction_table", "mixed_contact", "mixed_film_cycle"]
+           "ehl_sliding_friction", "fluid_traction_model", "fluid_traction_table", "mixed_contact", "mixed_film_cycle", "ROLLER_MIXED_OUTPUTS",
+           "roller_mixed"]
 
 #: effects that replace Coulomb friction by the EHL friction of the film
 EHL_EFFECTS = frozenset({"mixed", "non_newtonian"})
@@ -42,9 +44,10 @@ MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrica
 MIXED_FRICTION_READS = ("asperity_load_fraction", "h_c_mixed", "boundary_friction")
 
 
-def ehl_friction_inputs(lubricant: Any, body1: Any, body2: Any, effects: frozenset, *,
+def ehl_friction_inputs(lubricant: Any, materials: tuple, roughness: tuple, effects: frozenset, *,
                         asperity_density: float | None = None, asperity_radius: float | None = None) -> dict[str, Any]:
-    """The graph inputs of the EHL friction of two bodies (each with ``material`` and ``roughness``): the
+    """The graph inputs of the EHL friction of two surfaces of ``materials`` (each a
+    :class:`~camcontact.components.Material`; empty: no effusivity here) with RMS ``roughness`` [m] (a pair, None where not given): the
     lubricant's boundary friction, the surfaces' thermal effusivities (when the materials give them) and, with
     ``mixed``, the asperity radius [m] and density [1/m^2] (given, or :data:`ASPERITY_DEFAULTS` with the
     composite roughness)."""
@@ -52,11 +55,12 @@ def ehl_friction_inputs(lubricant: Any, body1: Any, body2: Any, effects: frozens
     if lubricant is not None:
         inputs["boundary_friction"] = lubricant.boundary_friction
     try:
-        inputs["effusivity"] = (body1.material.thermal_effusivity(), body2.material.thermal_effusivity())
+        if materials:  # none given: the scene states the effusivity itself
+            inputs["effusivity"] = tuple(material.thermal_effusivity() for material in materials)
     except InputError:
         pass  # only a thermal traction model needs it: reported up front as missing
-    if "mixed" in effects and body1.roughness is not None and body2.roughness is not None:
-        sigma = math.hypot(body1.si.roughness, body2.si.roughness)
+    if "mixed" in effects and None not in roughness:
+        sigma = math.hypot(*roughness)
         product, ratio = ASPERITY_DEFAULTS
         radius = asperity_radius if asperity_radius is not None else sigma / ratio
         density = (asperity_density if asperity_density is not None
@@ -251,3 +255,29 @@ def contact_ehl_friction(traction_model, w, p_h, b, h_c, u_s, u_m, lubricant_sta
     names = {"friction_force": "friction_per_length", "friction_coefficient": "traction_coefficient",
              "friction_power": "friction_power_per_length"}
     return _one({names.get(k, k): v for k, v in values.items()})
+
+
+#: the per-roller outputs of :func:`roller_mixed` (each race)
+ROLLER_MIXED_OUTPUTS = tuple(f"{q}_{race}" for q in ("asperity_load_fraction", "h_c_mixed", "lubrication_regime",
+                                                     "mixed_valid") for race in RACES)
+
+
+@step("mixed", provides=ROLLER_MIXED_OUTPUTS, model="greenwood_tripp + johnson_greenwood_poon")
+def roller_mixed(Q, roller_length, contact_radii, E_reduced, u_m, eta0, alpha, piezoviscosity, h_c_inner, h_c_outer,
+                 sigma, asperity_density, asperity_radius):
+    """:func:`mixed_film_cycle` at both raceway contacts of every roller (w = Q / l_we, the rolling-direction
+    radius of each race, the composite roughness sqrt 2 sigma of two surfaces of RMS ``sigma`` [m]): the asperities'
+    share of the roller load [-], the film at the fluid's share [m], the regime ("unloaded" for a roller without
+    load) and ``mixed_valid`` per roller and race."""
+    alpha_effective = alpha if piezoviscosity else 0.0
+    composite = math.hypot(sigma, sigma)
+    out = {}
+    for race, h_c in (("inner", h_c_inner), ("outer", h_c_outer)):
+        values = mixed_film_cycle(Q / roller_length, np.full(Q.size, contact_radii[race]), E_reduced,
+                                  np.full(Q.size, u_m), eta0, alpha_effective, h_c, composite, asperity_density,
+                                  asperity_radius, piezoviscosity)
+        values["lubrication_regime"][Q <= 0.0] = "unloaded"
+        values["asperity_load_fraction"][Q <= 0.0] = np.nan  # no contact: no share (the regime says why)
+        for q in ("asperity_load_fraction", "h_c_mixed", "lubrication_regime", "mixed_valid"):
+            out[f"{q}_{race}"] = values[q]
+    return out

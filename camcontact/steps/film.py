@@ -33,7 +33,7 @@ from .contact import RACES
 __all__ = [
     "FILMS", "ball_cone_films", "bearing_lubrication", "check_thermal_data", "composite_roughness_step",
     "ehl_groups", "film_parameter", "films_of", "inlet_thermal_correction", "isothermal_films", "line_film",
-    "lubrication_regime_step", "model_reads", "raceway_roughness", "resolve_film_model", "roller_films",
+    "lubrication_regime_step", "model_reads", "raceway_roughness", "resolve_film_model", "roller_films", "roller_thermal_films",
     "thermal_films",
 ]
 
@@ -169,6 +169,14 @@ def isothermal_films(**isothermal):
 def thermal_films(thermal_factor, **isothermal):
     """The films [m] reduced by the inlet shear-heating factor phi_T (``h_c = phi_T h_c_isothermal``, ...)."""
     return {name.removesuffix("_isothermal"): thermal_factor * value for name, value in isothermal.items()}
+
+
+@step("film_thickness", provides=("h_c_inner", "h_c_outer", "h_min_inner", "h_min_outer", "h_min_bearing"),
+      model="thermal")
+def roller_thermal_films(thermal_factor, **isothermal):
+    """:func:`thermal_films` of a bearing's raceway films (``h_c_inner_isothermal`` -> ``h_c_inner``, ...,
+    ``h_min_bearing``): one factor phi_T for all contacts."""
+    return thermal_films(thermal_factor, **isothermal)
 
 
 def check_thermal_data(lubricant) -> None:

@@ -201,24 +201,35 @@ def _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, roller_le
       model=lambda traction_model: f"{traction_model.name} fluid traction")
 def roller_fluid_friction(traction_model, Q, u_m, slide_roll_ratio, p_h_inner, p_h_outer, b_inner, b_outer,
                           h_c_inner, h_c_outer, lubricant_state, E_reduced, effusivity, contact_radii,
-                          roller_length):
+                          roller_length, **inputs):
     """Fluid traction of the film at both raceway contacts of every loaded roller at the slide/roll ratio
     (a ``traction_models`` model over the Hertz pressure with the central film, :mod:`camcontact.models.
     traction_fluid`: it falls to zero with the slip, as EHL traction does), the flash temperature [K] of each
     contact (Delabenetta 2021 Eq. 48) and the bearing's sliding friction power sum(mu Q |u1 - u2|) [W]; NaN
-    for unloaded rollers; ``friction_valid_*`` whether the contact is loaded with a physical coefficient."""
+    for unloaded rollers; ``friction_valid_*`` whether the contact is loaded with a physical coefficient.
+
+    With the ``mixed`` step's ``asperity_load_fraction_<race>`` and ``h_c_mixed_<race>`` in ``inputs`` (and the
+    lubricant's ``boundary_friction``) each contact's coefficient is mu_b f_a + mu_fluid (1 - f_a), the fluid
+    shearing the film at its share (reference ``friction_traction_thermal.md`` §2)."""
     u1, u2 = u_m * (1 + 0.5 * slide_roll_ratio), u_m * (1 - 0.5 * slide_roll_ratio)
     loaded = Q > 0.0
     films = {"inner": (p_h_inner, b_inner, h_c_inner), "outer": (p_h_outer, b_outer, h_c_outer)}
     mu = {race: np.full(Q.size, np.nan) for race in RACES}
+    fluid_valid = {}
+    mu_b = float(inputs.get("boundary_friction", 0.0))
     for race in RACES:
-        p_h, b, h = (np.asarray(v, dtype=float)[loaded] for v in films[race])
+        share = np.asarray(inputs.get(f"asperity_load_fraction_{race}", np.zeros(Q.size)), dtype=float)[loaded]
+        film = inputs.get(f"h_c_mixed_{race}", films[race][2])
+        p_h, b, h = (np.asarray(v, dtype=float)[loaded] for v in (*films[race][:2], film))
+        fluid = np.full(Q.size, np.nan)
         if loaded.any():
             contact = traction_model.contact(p_h, b, h, u_m, lubricant_state, effusivity)
-            mu[race][loaded] = np.abs(contact.solve(np.full(p_h.size, u1 - u2)).coefficient)
+            fluid[loaded] = np.abs(contact.solve(np.full(p_h.size, u1 - u2)).coefficient)
+            mu[race][loaded] = mu_b * share * (u1 != u2) + fluid[loaded] * (1.0 - share)
+        fluid_valid[race] = np.isfinite(fluid) & (fluid <= FLUID_TRACTION_LIMIT)
     out = _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, roller_length)
     for race in RACES:
-        out[f"friction_valid_{race}"] = loaded & np.isfinite(mu[race]) & (mu[race] <= FLUID_TRACTION_LIMIT)
+        out[f"friction_valid_{race}"] = loaded & np.isfinite(mu[race]) & fluid_valid[race]
     valid = all(out[f"friction_valid_{race}"][loaded].all() for race in RACES)
     out["friction_validity"] = "ok" if valid else "a loaded contact has no film or an unphysical traction (> 0.15)"
     return out

@@ -21,9 +21,10 @@ from ..models.film_thermal import slide_roll_measure
 from ..step_graph import step
 
 __all__ = [
-    "FOLLOWER_KINEMATICS", "RACEWAY_KINEMATICS", "ball_cone_motion", "bearing_kinematics", "degrees_text",
+    "FOLLOWER_KINEMATICS", "RACEWAY_KINEMATICS", "ball_cone_motion", "bearing_kinematics", "bearing_surface_speeds",
+    "degrees_text",
     "follower_motion",
-    "given_raceway_speeds", "motion_continuity", "pure_rolling_raceway", "surface_kinematics",
+    "given_raceway_speeds", "motion_continuity", "pure_rolling_raceway", "raceway_sliding_speed", "surface_kinematics",
 ]
 
 FOLLOWER_KINEMATICS = ("lift", "follower_velocity", "follower_acceleration", "follower_jerk", "pressure_angle",
@@ -111,6 +112,14 @@ def _slide_roll(u1: float, u2: float) -> float:
     return float(slide_roll_measure(u1, u2))
 
 
+@step("surface_speeds", provides=("u1", "u2"))
+def bearing_surface_speeds(u_m, **inputs):
+    """Surface speeds [m/s] of ring and roller at a raceway contact, u_m (1 + s/2) and u_m (1 - s/2), with the
+    scene's ``slide_roll_ratio`` s (``inputs``; pure rolling, s = 0, without one)."""
+    s = inputs.get("slide_roll_ratio") or 0.0
+    return {"u1": u_m * (1.0 + 0.5 * s), "u2": u_m * (1.0 - 0.5 * s)}
+
+
 @step("kinematics", provides=RACEWAY_KINEMATICS, model="pure_rolling")
 def pure_rolling_raceway(ring_speed, slide_roll_ratio, pitch_diameter, gamma):
     """Surface speeds [m/s] of a raceway contact rolling purely in the cage frame,
@@ -120,6 +129,12 @@ def pure_rolling_raceway(ring_speed, slide_roll_ratio, pitch_diameter, gamma):
     return {"u_raceway": u1, "u_roller": u2, "u_m": rolling, "slide_roll_measure": _slide_roll(u1, u2),
             "speed_basis": f"pure rolling in the cage frame (d_m = {pitch_diameter * 1e3:.4g} mm), "
                            f"slide/roll {slide_roll_ratio:g}"}
+
+
+@step("sliding", provides=("u_s",))
+def raceway_sliding_speed(u_raceway, u_roller):
+    """Sliding speed u_s = u_raceway - u_roller [m/s] of a raceway contact (the shear of its film)."""
+    return {"u_s": u_raceway - u_roller}
 
 
 @step("kinematics", provides=RACEWAY_KINEMATICS, model="given_speeds")

@@ -13,6 +13,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import attrs
+
 from ..contact.roughness import lubrication_regime
 from ..ehl.groups import hamrock_line
 from ..errors import InputError
@@ -24,7 +26,7 @@ from ..models.viscosity_pressure import Roelands
 from ..models.viscosity_temperature import Walther
 from ..step_graph import step
 
-__all__ = ["CELSIUS", "EHD_RANGE", "FILM_OUTPUTS", "LOOP_LIMIT", "LOOP_STEP", "raceway_film_chain",
+__all__ = ["CELSIUS", "EHD_RANGE", "FILM_OUTPUTS", "LOOP_LIMIT", "LOOP_STEP", "raceway_film_chain", "raceway_lubricant_state",
            "raceway_lubricant_properties", "thesis_temperature_loop"]
 
 CST = 1e-6  # m^2/s per cSt
@@ -148,3 +150,17 @@ def raceway_film_chain(w, R, E_reduced, u_m, u_raceway, u_roller, slide_roll_mea
         return result["Lambda_oc"], result
 
     return thesis_temperature_loop(start, lambda_min, lambda_at)[1]
+
+
+@step("traction_lubricant", provides=("lubricant_state",), model="chain's working temperature")
+def raceway_lubricant_state(lubricant, temperature, eta0, alpha, thermoviscous_coefficient, lubricant_conductivity,
+                            lubricant_specific_heat):
+    """The lubricant state the EHL friction of the raceway contact shears: the lubricant's laws (pressure-viscosity,
+    density) at the chain's working ``temperature`` [K] with the chain's own eta0 [Pa s], alpha [1/Pa], beta
+    [1/K], conductivity [W/(m K)] and specific heat [J/(kg K)] — so the friction and the film see one oil, in
+    the thesis's lubricant data (Walther through nu40/nu100, Gold alpha, Eqs. 32-39) as in the lubricant's."""
+    state = lubricant.state(temperature)
+    return {"lubricant_state": attrs.evolve(state, eta0=eta0, alpha=alpha,
+                                            thermoviscous_coefficient=thermoviscous_coefficient,
+                                            thermal_conductivity=lubricant_conductivity,
+                                            specific_heat=lubricant_specific_heat)}

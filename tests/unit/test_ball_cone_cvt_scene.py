@@ -12,8 +12,10 @@ from camcontact.models.life_lundberg_palmgren import system_life
 from camcontact.sweep import evolve_path, sweep_frame
 
 STEEL = cc.Material(E="207 GPa", nu=0.3)
+# a traction fluid: its limiting shear stress rises as 0.088 p (Bair & Winer 1979, the polyphenyl ether 5P4E), not
+# as a mineral oil's 0.047 p (the traction models' default)
 FLUID = cc.Lubricant(name="traction fluid", nu40="30 cSt", nu100="5.5 cSt", density="0.90 g/cm^3",
-                     alpha="2.5e-8 1/Pa")
+                     alpha="2.5e-8 1/Pa", limiting_shear_slope=0.088)
 
 
 def cvt(**changes):

@@ -81,9 +81,10 @@ def test_accuracy_vs_time_friction_quick(tmp_path):
     assert (tmp_path / "accuracy_vs_time_friction.csv").exists()
     by = frame.set_index("rung")
     assert len(by) == 6 and (frame["time per angle [ms]"] > 0).all()
-    # the Newtonian film sits on the limiting-shear plateau (0.075, + boundary friction where asperities touch);
+    # the Newtonian film sits on the limiting-shear plateau (Lambda_L = 0.047, + boundary friction where asperities
+    # touch);
     # Eyring's non-linear viscous traction lies below it, and so does the friction power
-    assert 0.07 < by.loc["mixed, newtonian fluid", "peak coefficient"] < 0.085
+    assert 0.045 < by.loc["mixed, newtonian fluid", "peak coefficient"] < 0.06
     assert by.loc["eyring isothermal", "peak coefficient"] < 0.1
     assert by.loc["eyring isothermal", "friction power mean [W]"] < by.loc["mixed, newtonian fluid",
                                                                            "friction power mean [W]"]

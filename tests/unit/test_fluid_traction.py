@@ -381,10 +381,11 @@ def test_model_evaluates_the_physics_and_reports_gaps(oil_state):
     out = model(model_state(oil_state))
     direct = traction_coefficient(np.array([0.05, -1.0]), p_h=1e9, film_thickness=0.3e-6, eta0=oil_state.eta0,
                                   log_viscosity_ratio=oil_state.log_viscosity_ratio, eyring_stress=5e6,
-                                  limiting_shear_slope=0.075)
+                                  limiting_shear_slope=LIMITING_SHEAR_SLOPE)
     np.testing.assert_allclose(out["traction_coefficient"][:2], direct, rtol=1e-14)
     np.testing.assert_allclose(out["traction_force"][:2], 800.0 * direct, rtol=1e-14)
-    assert list(out["traction_regime"]) == ["nonlinear", "nonlinear", "open", "no film"]
+    # 1 m/s of slide at 1 GPa reaches the limiting shear stress (Lambda_L 0.047 p): plateau; 0.05 m/s does not
+    assert list(out["traction_regime"]) == ["nonlinear", "plateau", "open", "no film"]
     assert list(out["traction_valid"]) == [True, True, True, False]
     assert out["traction_coefficient"][2] == 0.0 and math.isnan(out["traction_coefficient"][3])
     np.testing.assert_array_equal(out["traction_temperature_rise"][:3], 0.0)

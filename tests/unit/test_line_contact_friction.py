@@ -41,7 +41,8 @@ def test_non_newtonian_friction_is_the_eyring_traction_of_the_scenes_film():
     w = 5e3 / 0.01
     assert result["friction_per_length"] == pytest.approx(direct * w, rel=1e-12)
     assert result["friction_power_per_length"] == pytest.approx(direct * w * 0.2, rel=1e-12)
-    assert result["traction_regime"] == "nonlinear" and result["traction_valid"] is True
+    # 0.2 m/s of slide above 1 GPa: the Eyring stress reaches the limiting shear stress 0.047 p (Höglund's mineral oil)
+    assert result["traction_regime"] == "plateau" and result["traction_valid"] is True
 
 
 def test_mixed_shares_the_load_on_the_scenes_film_and_adds_boundary_friction():

@@ -111,7 +111,7 @@ def test_missing_inputs_are_named_before_running():
     with pytest.raises(InputError, match="convention 'book'"):
         cc.Analysis(contact(), models={"convention": "book"})
     with pytest.raises(InputError, match="do not apply to a raceway_contact scene"):
-        cc.Analysis(contact(), effects=["thermal"])
+        cc.Analysis(contact(), effects=["elasticity"])
 
 
 def test_lubricant_without_the_data_a_convention_needs():

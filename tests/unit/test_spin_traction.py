@@ -16,6 +16,7 @@ from scipy import integrate
 from camcontact.contact.fluid_traction import TractionThermal
 from camcontact.contact.spin_traction import PressureField, SpinTractionContact
 from camcontact.errors import InputError
+from camcontact.models.traction_fluid import EyringTraction
 from camcontact.models.traction_spin import EhlTraction
 
 A, B, PH, H, V, ETA0 = 5.5e-4, 6.4e-4, 1.5e9, 5e-8, 2.0, 0.02
@@ -179,7 +180,7 @@ def test_model_checks_the_load_and_fields():
         def log_viscosity_ratio(p):
             return 2e-8 * p
 
-    model = EhlTraction()
+    model = EhlTraction(fluid=EyringTraction(limiting_shear_slope=0.088))  # a traction fluid's (5P4E)
     N = 2 / 3 * math.pi * A * B * PH
     out = model.evaluate(N, A, B, PH, H, V, 60.0, 50.0, State())
     assert out["creepage"] < 0 and not out["gross_slip"] and 0 < out["traction_margin"] < 1

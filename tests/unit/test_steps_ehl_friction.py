@@ -17,7 +17,7 @@ from camcontact.models.mixed_lubrication import mixed_line_contact
 from camcontact.scene_file import load_scene
 from camcontact.models.film_line import Moes
 from camcontact.steps.ehl_friction import (FLUID_TRACTION_LIMIT, contact_ehl_friction, ehl_sliding_friction,
-                                           fluid_traction_table, mixed_contact, mixed_film_cycle)
+                                           fluid_traction_table, mixed_contact, mixed_film_cycle, roller_mixed)
 from step_checks import assert_provides
 
 OIL = cc.Lubricant(alpha="2.2e-8 1/Pa", roelands_z=0.68)
@@ -39,6 +39,29 @@ def test_mixed_film_cycle_wraps_the_load_sharing_model_and_marks_open_contacts()
     assert out["lubrication_regime"][0] == "open" and out["asperity_load_fraction"][0] == 0.0
     assert out["asperity_load_fraction"][1] > out["asperity_load_fraction"][2]  # slower: more asperity load
     assert out["mixed_valid"].dtype == bool and not out["mixed_valid"][0]
+
+
+def test_roller_mixed_is_the_load_sharing_of_each_roller_contact():
+    """Rollers of 0, 4.135 and 8.27 kN on 41.35 mm (w = 0, 1e5, 2e5 N/m) at the inner (R 8 mm) and outer
+    (R 12 mm) raceway, 2 m/s, both surfaces 0.2 um RMS (composite 0.283 um): each race equals
+    mixed_film_cycle with its radius; the unloaded roller is "unloaded" with no share (NaN)."""
+    Q = W * 41.35e-3
+    films = {race: np.r_[np.nan, Moes().evaluate(np.full(2, r), W[1:], E, 2.0, STATE.eta0, STATE.alpha)["h_c"]]
+             for race, r in (("inner", 0.008), ("outer", 0.012))}
+    sigma = np.hypot(0.2e-6, 0.2e-6)
+    density, radius = 0.05 / (6e-6 * sigma), 6e-6
+    out = roller_mixed(Q, 41.35e-3, {"inner": 0.008, "outer": 0.012}, E, 2.0, STATE.eta0, STATE.alpha, True,
+                       films["inner"], films["outer"], 0.2e-6, density, radius)
+    assert_provides(roller_mixed, out)
+    for race, r in (("inner", 0.008), ("outer", 0.012)):
+        direct = mixed_film_cycle(W, np.full(3, r), E, np.full(3, 2.0), STATE.eta0, STATE.alpha, films[race], sigma,
+                                  density, radius, True)
+        np.testing.assert_allclose(out[f"asperity_load_fraction_{race}"][1:], direct["asperity_load_fraction"][1:])
+        np.testing.assert_allclose(out[f"h_c_mixed_{race}"][1:], direct["h_c_mixed"][1:])
+        assert out[f"lubrication_regime_{race}"][0] == "unloaded"
+        assert np.isnan(out[f"asperity_load_fraction_{race}"][0]) and not out[f"mixed_valid_{race}"][0]
+    # the conformal outer contact carries a thicker film: a smaller asperity share at equal load
+    assert np.all(out["asperity_load_fraction_outer"][1:] < out["asperity_load_fraction_inner"][1:])
 
 
 def test_mixed_film_cycle_shares_the_load_on_the_scenes_own_film():

@@ -28,6 +28,7 @@ from camcontact.steps.film import (
     lubrication_regime_step,
     raceway_roughness,
     roller_films,
+    roller_thermal_films,
     thermal_films,
 )
 from step_checks import assert_provides
@@ -138,6 +139,17 @@ def test_isothermal_and_thermal_films():
     assert_provides(thermal_films, out)
     assert out["h_c"] == pytest.approx(1.6e-7) and out["h_min"] == pytest.approx(1.2e-7)
     assert_provides(thermal_films, thermal_films(0.5, h_c_isothermal=2e-7), subset=("h_c",))
+
+
+def test_roller_thermal_films_scale_every_raceway_film():
+    """A bearing's films per roller and race and its thinnest film, each times phi_T (NaN stays NaN)."""
+    isothermal = {"h_c_inner_isothermal": np.array([3e-7, np.nan]), "h_c_outer_isothermal": np.array([4e-7, np.nan]),
+                  "h_min_inner_isothermal": np.array([2e-7, np.nan]), "h_min_outer_isothermal": np.array([3e-7, np.nan]),
+                  "h_min_bearing_isothermal": 2e-7}
+    out = roller_thermal_films(0.9, **isothermal)
+    assert_provides(roller_thermal_films, out)
+    np.testing.assert_allclose(out["h_c_inner"], [2.7e-7, np.nan])
+    assert out["h_min_bearing"] == pytest.approx(1.8e-7) and np.isnan(out["h_min_outer"][1])
 
 
 def _thesis_oil(theta):

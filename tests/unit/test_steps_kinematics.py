@@ -17,12 +17,14 @@ from camcontact.errors import InputError, ValidityWarning
 from camcontact.kinematics.follower import FollowerGeometry
 from camcontact.kinematics.motion_program import MotionProgram
 from camcontact.steps.kinematics import (
+    bearing_surface_speeds,
     ball_cone_motion,
     bearing_kinematics,
     follower_motion,
     given_raceway_speeds,
     motion_continuity,
     pure_rolling_raceway,
+    raceway_sliding_speed,
     surface_kinematics,
 )
 from step_checks import assert_provides
@@ -212,6 +214,24 @@ def test_given_raceway_speeds_delabenetta_eq_31():
     assert out["u_roller"] == pytest.approx(2.6861, abs=5e-5) and out["u_roller"] == pytest.approx(u2, rel=1e-12)
     assert out["u_m"] == pytest.approx(0.5 * (u1 + u2), rel=1e-12)
     assert out["slide_roll_measure"] == pytest.approx((u1 - u2) / (u1 + u2), rel=1e-12)
+
+
+def test_bearing_surface_speeds_split_the_entrainment_by_the_slide_roll_ratio():
+    """u1, u2 = u_m (1 +- s/2): s = 0.02 at 2 m/s gives 2.02 and 1.98 m/s ((u1 - u2)/u_m = s); pure rolling without s."""
+    out = bearing_surface_speeds(2.0, slide_roll_ratio=0.02)
+    assert_provides(bearing_surface_speeds, out)
+    assert out["u1"] == pytest.approx(2.02, rel=1e-12) and out["u2"] == pytest.approx(1.98, rel=1e-12)
+    assert bearing_surface_speeds(2.0) == {"u1": 2.0, "u2": 2.0}
+    assert bearing_surface_speeds(2.0, slide_roll_ratio=None) == {"u1": 2.0, "u2": 2.0}
+
+
+def test_raceway_sliding_speed_is_raceway_minus_roller():
+    """u_s = u_raceway - u_roller with Delabenetta's Eq. 31 speeds (4.6810 - 2.6861 = 1.9949 m/s); negative when
+    the roller's surface is the faster one; 0 in pure rolling."""
+    out = raceway_sliding_speed(4.6810, 2.6861)
+    assert_provides(raceway_sliding_speed, out)
+    assert out["u_s"] == pytest.approx(1.9949, rel=1e-12)
+    assert raceway_sliding_speed(1.0, 1.5)["u_s"] == -0.5 and raceway_sliding_speed(2.1, 2.1)["u_s"] == 0.0
 
 
 def test_raceway_speeds_without_motion_are_refused():

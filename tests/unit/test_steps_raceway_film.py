@@ -16,7 +16,7 @@ import pytest
 import camcontact as cc
 from camcontact.errors import InputError
 from camcontact.scenes.raceway_conventions import CORRECTED, THESIS
-from camcontact.steps.raceway_film import raceway_film_chain
+from camcontact.steps.raceway_film import raceway_film_chain, raceway_lubricant_state
 
 GREASE = cc.Lubricant(name="NH1 11-572", nu40="575 cSt", nu100="50 cSt", density="0.92 g/cm^3", form="grease",
                       alpha_correlation="gold", upper_temperature="120 degC")
@@ -121,3 +121,23 @@ def test_refusals_name_the_input():
         chain(THESIS, lubricant=plain)
     with pytest.raises(InputError, match="lambda_min = 1e\\+06: the thesis's temperature loop"):
         chain(THESIS, lambda_min=1e6)
+
+
+def test_lubricant_state_of_the_friction_is_the_chains_oil():
+    """The EHL friction's lubricant state carries the chain's eta0, alpha, beta, k and c at its working
+    temperature (thesis: Walther a = 0.7 through nu40/nu100 with K = degC + 273, Gold alpha: eta0 0.0741 Pa s,
+    where the lubricant's own Walther law gives 0.3 % less), and the lubricant's pressure law: its
+    viscosity at 0.5 GPa is Roelands's (the lubricant's default law) with the chain's eta0 and alpha:
+    eta0 exp{(ln eta0 + 9.67)[(1 + p/p0)^z - 1]}, z = alpha p0/(ln eta0 + 9.67), p0 = 1.96e8 Pa."""
+    out = chain(THESIS)
+    names = ("eta0", "alpha", "thermoviscous_coefficient", "lubricant_conductivity", "lubricant_specific_heat")
+    state = raceway_lubricant_state(GREASE, out["temperature"], *(out[n] for n in names))["lubricant_state"]
+    assert (state.eta0, state.alpha, state.thermoviscous_coefficient, state.thermal_conductivity,
+            state.specific_heat) == tuple(out[n] for n in names)
+    assert state.eta0 == pytest.approx(0.0741, abs=5e-5)
+    assert GREASE.state(out["temperature"]).eta0 == pytest.approx(state.eta0, rel=5e-3)
+    assert state.eta0 != GREASE.state(out["temperature"]).eta0
+    margin, p0 = math.log(out["eta0"]) + 9.67, 1.96e8
+    z = out["alpha"] * p0 / margin
+    roelands = out["eta0"] * math.exp(margin * ((1 + 0.5e9 / p0) ** z - 1))
+    assert float(state.viscosity(0.5e9)) == pytest.approx(roelands, rel=1e-9)
