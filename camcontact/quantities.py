@@ -223,7 +223,7 @@ QUANTITIES: dict[str, QuantitySpec] = {
           for q, unit, display, text in (
               ("asperity_load_fraction", "", "", "share of the roller load the asperities carry (Greenwood-Tripp)"),
               ("h_c_mixed", "m", "um", "central film at the fluid's share of the load"),
-              ("lubrication_regime", None, None, "boundary, mixed or full_film (unloaded: no contact)"),
+              ("lubrication_regime", None, None, "boundary, mixed or full_film (unknown: no film; unloaded: no contact)"),
               ("mixed_valid", None, None, "True where the load-sharing model can reach the boundary regime"))),
         _q("flash_temperature_inner", "K", "K", "flash temperature at the inner raceway"),
         _q("flash_temperature_outer", "K", "K", "flash temperature at the outer raceway"),

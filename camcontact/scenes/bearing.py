@@ -40,13 +40,15 @@ A :class:`~camcontact.components.LoadedBearing` becomes the steps
 
 Effects: ``elasticity``, ``piezoviscosity`` and ``compressibility`` (on by default) as the line scene;
 ``thermal``: the inlet shear-heating reduction phi_T of every raceway film (Delabenetta 2021 Eq. 44, the
-Wilson–Sheu slide/roll form, at the scene's slide/roll ratio; needs the lubricant's thermal conductivity and
+Wilson–Sheu slide/roll form, at the scene's slide/roll ratio, pure rolling without one; needs the lubricant's
+thermal conductivity and
 temperature-dependent viscosity: ``thermal_loading``, ``thermal_factor``) and the contact temperature rise of
 the fluid traction (needs the material's thermal data); ``mixed``: Greenwood–Tripp asperity load sharing at
 each raceway contact of every roller on its film (``asperity_load_fraction_<race>``, ``h_c_mixed_<race>``,
 ``lubrication_regime_<race>``, ``mixed_valid_<race>``; asperity parameters
 ``SphericalRollerBearing.asperity_density`` / ``asperity_radius`` or the orders-of-magnitude defaults), and
-the fluid friction gains the asperities' boundary friction mu_b f_a + mu_fluid (1 - f_a).
+the fluid friction gains the asperities' boundary friction mu_b f_a + mu_fluid (1 - f_a) (asked for, so a
+missing ``slide_roll_ratio`` is named up front).
 
 Per-roller outputs are arrays over the index ``roller`` (rows x Z, row by row); unloaded rollers
 have no contact: their Hertz and film values are NaN with ``contact_regime`` "unloaded". Only the
@@ -91,8 +93,8 @@ PER_ROLLER = frozenset({
 })
 #: what the effects add to the default report
 EFFECT_OUTPUTS = {"thermal": ("thermal_factor",),
-                  "mixed": tuple(f"{q}_{race}" for q in ("asperity_load_fraction", "lubrication_regime")
-                                 for race in RACES)}
+                  "mixed": (*(f"{q}_{race}" for q in ("asperity_load_fraction", "lubrication_regime",
+                                                      "friction_coefficient") for race in RACES), "friction_power")}
 DEFAULT_OUTPUTS = (
     "roller_row", "azimuth", "Q", "loaded", "b_inner", "p_h_inner", "b_outer", "p_h_outer", "h_min_inner", "h_min_outer",
     "Lambda_inner", "Lambda_outer", "contact_regime", "friction_coefficient_inner", "friction_coefficient_outer",
@@ -109,14 +111,13 @@ HINTS = {
     "E_reduced": "set SphericalRollerBearing.material (Hertz needs E and nu)",
     "fatigue_load_limit": "set SphericalRollerBearing.fatigue_load_limit (P_u from the catalogue)",
     "contamination": "set LoadedBearing.contamination (ISO 281 factor e_C, 0 < e_C <= 1)",
-    "slide_roll_ratio": "set LoadedBearing.slide_roll_ratio (the Kelley correlation needs sliding)",
+    "slide_roll_ratio": "set LoadedBearing.slide_roll_ratio (the raceway friction needs sliding)",
     "effusivity": "give the bearing material density, specific_heat and thermal_conductivity",
     "bearing_series": f"set SphericalRollerBearing.series, which the SKF friction model needs (one of "
                       f"{', '.join(SKF_SERIES)}; e.g. '240' for a 24040)",
     "lubrication": "set LoadedBearing.lubricant (its form, grease or oil, sets the lubrication method)",
     "base_oil": "set LoadedBearing.lubricant (its base oil sets the SKF model's mu_EHL)",
-    "asperity_density": "give SphericalRollerBearing.asperity_density and asperity_radius (the defaults need a "
-                        "roughness > 0)",
+    "asperity_density": "give SphericalRollerBearing.asperity_density and asperity_radius",
 }
 
 
@@ -191,6 +192,9 @@ def friction_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
         return {}
     bearing = scene.bearing
     roughness = bearing.si.roughness
+    if roughness == 0.0:
+        raise InputError(f"bearing scene: the 'mixed' effect needs rough surfaces; SphericalRollerBearing "
+                         f"{bearing.designation!r}.roughness = {bearing.roughness} (allowed: > 0)")
     return ehl_friction_inputs(scene.lubricant, (), (roughness, roughness), effects,
                                asperity_density=bearing.si.asperity_density, asperity_radius=bearing.si.asperity_radius)
 

@@ -44,10 +44,12 @@ Benedict–Kelley correlation by the EHL friction of the film (as the line-conta
 :func:`camcontact.steps.ehl_friction.contact_ehl_friction` at the sliding speed u_raceway - u_roller, over
 the Hertz pressure with the corrected central film h_oc, the lubricant at the chain's working temperature);
 ``mixed`` adds Greenwood–Tripp asperity load sharing on h_oc (the asperities' share, the film at the
-fluid's share, the lubrication regime, the boundary friction of the asperities); the flash temperature and
-the lubricant's temperatures then follow the EHL friction coefficient. ``thermal`` makes the traction
-thermal (its contact temperature rise; needs ``non_newtonian`` or ``mixed``: the chain always applies its
-inlet-heating factor, Eq. 44). Source: ../shared/reference/spherical_roller_bearing_delabenetta2021.md.
+fluid's share, the lubrication regime, the boundary friction of the asperities; without ``non_newtonian`` the
+fluid is Newtonian up to the limiting shear stress); the flash temperature (Eq. 48, and so the surface
+maximum) then follows the EHL friction coefficient, while the Couette film rise stays the chain's (Newtonian at
+the mean pressure, App. D). ``thermal`` makes the traction thermal (its contact temperature rise; needs
+``non_newtonian`` or ``mixed``: the chain always applies its inlet-heating factor, Eq. 44). ``mixed`` needs
+rough surfaces (a composite sigma > 0). Source: ../shared/reference/spherical_roller_bearing_delabenetta2021.md.
 """
 
 from __future__ import annotations
@@ -108,8 +110,7 @@ HINTS = {
     "yield_strength": "give RacewayContact.raceway_material.yield_strength",
     "roughness_wavelength": "give RacewayContact.roughness_wavelength (roughness stress)",
     "roller_speed": "give RacewayContact.roller_speed (this convention does not derive the rolling speed)",
-    "asperity_density": "give RacewayContact.asperity_density and asperity_radius (the defaults need a composite "
-                        "roughness sigma > 0)",
+    "asperity_density": "give RacewayContact.asperity_density and asperity_radius",
 }
 
 
@@ -132,6 +133,23 @@ def raceway_contact_inputs(contact: RacewayContact) -> dict[str, Any]:
     except InputError:
         pass  # only the temperatures need it: reported up front if they are asked for
     return inputs
+
+
+def check_friction_request(contact: RacewayContact, models: Mapping[str, Any], effects: frozenset) -> None:
+    """InputError for a friction request the scene cannot honour: ``thermal`` or a ``traction`` model without
+    the EHL friction (``non_newtonian`` / ``mixed``), ``mixed`` on smooth surfaces."""
+    ehl = bool(effects & EHL_EFFECTS)
+    if "thermal" in effects and not ehl:
+        raise InputError("raceway_contact scene: the 'thermal' effect makes the EHL friction's traction thermal and "
+                         "needs 'non_newtonian' or 'mixed' with it (the chain always applies its inlet-heating "
+                         "factor, Delabenetta Eq. 44)")
+    if "traction" in models and not ehl:
+        raise InputError(f"raceway_contact scene: model slot traction = {models['traction']!r} is the fluid of the EHL "
+                         "friction; switch it on with effects 'non_newtonian' or 'mixed' (the chain's own friction "
+                         "is Benedict-Kelley)")
+    if "mixed" in effects and contact.si.raceway_roughness == 0.0 and contact.si.roller_roughness == 0.0:
+        raise InputError("raceway_contact scene: the 'mixed' effect needs rough surfaces; RacewayContact."
+                         "raceway_roughness and roller_roughness are both 0 (allowed: a composite RMS > 0)")
 
 
 def friction_steps(effects: frozenset, thermal_traction: bool) -> list[Step]:
@@ -159,12 +177,9 @@ def build_raceway_contact(contact: RacewayContact, *, models: Mapping[str, Any],
     """Scene graph of a :class:`~camcontact.components.RacewayContact` (one variant)."""
     effects = checked_request("raceway_contact", models, effects, slots=("convention", "traction"),
                               supported=SUPPORTED_EFFECTS, default=())
-    if "thermal" in effects and not effects & EHL_EFFECTS:
-        raise InputError("raceway_contact scene: the 'thermal' effect makes the EHL friction's traction thermal and "
-                         "needs 'non_newtonian' or 'mixed' with it (the chain always applies its inlet-heating "
-                         "factor, Delabenetta Eq. 44)")
     convention = resolve_convention(models.get("convention", "thesis"))
     ehl = bool(effects & EHL_EFFECTS)
+    check_friction_request(contact, models, effects)
     traction = fluid_traction_model(contact.lubricant, effects, models.get("traction")) if ehl else None
     steps = [
         Step.of(raceway_geometry),

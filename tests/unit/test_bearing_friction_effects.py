@@ -29,11 +29,10 @@ BASE = {"elasticity", "piezoviscosity"}
 
 
 def scene(lubricant=OIL, **changes):
-    bearing = cc.SphericalRollerBearing(
-        designation="test", bore="200 mm", outer_diameter="310 mm", width="109 mm", rollers_per_row=25,
-        roller_diameter="27 mm", roller_length="41.35 mm", contact_angle="9 deg", C="1700 kN", C0="2120 kN",
-        radial_clearance="0.1 mm", fatigue_load_limit="200 kN", material=STEEL, roughness="0.23 um",
-        **changes)
+    fields = dict(designation="test", bore="200 mm", outer_diameter="310 mm", width="109 mm", rollers_per_row=25,
+                  roller_diameter="27 mm", roller_length="41.35 mm", contact_angle="9 deg", C="1700 kN", C0="2120 kN",
+                  radial_clearance="0.1 mm", fatigue_load_limit="200 kN", material=STEEL, roughness="0.23 um")
+    bearing = cc.SphericalRollerBearing(**(fields | changes))
     return cc.LoadedBearing(bearing=bearing, radial_load="150 kN", axial_load="10 kN", outer_speed="300 rpm",
                             lubricant=lubricant, temperature="85 degC", contamination=0.5, slide_roll_ratio=0.02)
 
@@ -115,6 +114,11 @@ def test_mixed_report_explains_every_nan_and_the_fields_are_checked():
         scene(asperity_density="0 1/mm^2")
     with pytest.raises(InputError, match="SphericalRollerBearing.asperity_radius"):
         scene(asperity_radius="-2 um")
+    with pytest.raises(InputError, match="'mixed' effect needs rough surfaces; SphericalRollerBearing 'test'.roughness"):
+        cc.Analysis(scene(roughness="0 um"), effects=BASE | {"mixed"})
+    no_slip = attrs.evolve(scene(), slide_roll_ratio=None)
+    with pytest.raises(InputError, match="slide_roll_ratio: set LoadedBearing.slide_roll_ratio"):
+        cc.Analysis(no_slip, effects=BASE | {"mixed"})  # the friction mixed promises needs the sliding
     kelley = cc.Analysis(scene(), effects=BASE | {"mixed"}, models={"friction": "kelley"},
                          outputs=["asperity_load_fraction_inner", "friction_coefficient_inner"]).run()
     alone = cc.Analysis(scene(), effects=BASE, models={"friction": "kelley"},

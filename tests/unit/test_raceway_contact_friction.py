@@ -121,11 +121,18 @@ def test_mixed_shares_the_load_on_the_corrected_film():
 
 def test_thermal_traction_falls_below_the_isothermal_and_needs_the_fluid_friction():
     """At the thesis's 54 % slide/roll the shear heats the film: the thermal Eyring coefficient is below the
-    isothermal one, with a positive contact temperature rise; ``thermal`` alone is refused by name."""
+    isothermal one, with a positive contact temperature rise; ``thermal`` alone is refused by name. The flash
+    temperature follows the coefficient; the Couette film rise (Newtonian at the mean pressure) does not."""
     def friction(effects):
         return rows(cc.Analysis(contact(), effects=effects,
                                 outputs=["friction_coefficient", "traction_temperature_rise"]).run())["thesis"]
     isothermal, thermal = friction({"non_newtonian"}), friction({"non_newtonian", "thermal"})
+    temperatures = {name: rows(cc.Analysis(contact(), effects=effects,
+                                           outputs=["flash_temperature", "film_temperature_rise"]).run())["thesis"]
+                    for name, effects in (("isothermal", {"non_newtonian"}), ("thermal", {"non_newtonian", "thermal"}))}
+    assert temperatures["thermal"]["flash_temperature [K]"] < temperatures["isothermal"]["flash_temperature [K]"]
+    assert (temperatures["thermal"]["film_temperature_rise [K]"]
+            == temperatures["isothermal"]["film_temperature_rise [K]"])
     assert thermal["friction_coefficient [-]"] < 0.9 * isothermal["friction_coefficient [-]"]
     assert isothermal["traction_temperature_rise [K]"] == 0.0 < thermal["traction_temperature_rise [K]"]
     with pytest.raises(InputError, match="'thermal' effect .* needs 'non_newtonian' or 'mixed'"):
@@ -138,8 +145,10 @@ def test_friction_fields_and_model_slot_are_checked():
     with pytest.raises(InputError, match="RacewayContact.asperity_radius"):
         contact(asperity_radius="0 um")
     smooth = contact(raceway_roughness="0 um", roller_roughness="0 um")
-    with pytest.raises(InputError, match="asperity_density: give RacewayContact.asperity_density"):
+    with pytest.raises(InputError, match="'mixed' effect needs rough surfaces; RacewayContact.raceway_roughness"):
         cc.Analysis(smooth, effects={"mixed"}, outputs=["asperity_load_fraction"])
+    with pytest.raises(InputError, match="model slot traction = 'eyring' .* switch it on with effects"):
+        cc.Analysis(contact(), models={"traction": "eyring"})
     newtonian = cc.Analysis(contact(), effects={"non_newtonian"}, models={"traction": "newtonian"},
                             outputs=["friction_coefficient"]).run()
     eyring = cc.Analysis(contact(), effects={"non_newtonian"}, outputs=["friction_coefficient"]).run()
