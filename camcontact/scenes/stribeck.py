@@ -33,6 +33,7 @@ import numpy as np
 
 from ..components.line_contact import LineContact
 from ..errors import InputError
+from ..steps.kinematics import split_speed
 from ..units import to_quantity
 from .line_contact import MIXED_OUTPUTS
 
@@ -116,8 +117,9 @@ def stribeck_sweep(contact: LineContact, entrainment_speeds: Any = None, *, slid
 
     from ..analysis import Analysis
 
-    grid = pd.DataFrame({"body1.speed": [f"{float(u * (1.0 + 0.5 * s))!r} m/s" for u in speeds],
-                         "body2.speed": [f"{float(u * (1.0 - 0.5 * s))!r} m/s" for u in speeds]})
+    pairs = [split_speed(u, s) for u in speeds]
+    grid = pd.DataFrame({"body1.speed": [f"{float(u1)!r} m/s" for u1, _ in pairs],
+                         "body2.speed": [f"{float(u2)!r} m/s" for _, u2 in pairs]})
     outputs = [q for q in STRIBECK_OUTPUTS if "mixed" in effects or q not in MIXED_OUTPUTS]
     analysis = Analysis(contact, outputs=outputs, models=dict(models or {}),
                         effects=effects | {"elasticity", "piezoviscosity"})

@@ -24,6 +24,7 @@ from ..models.friction import Kelley
 from ..step_graph import step
 from .contact import RACES
 from .ehl_friction import FLUID_TRACTION_LIMIT
+from .kinematics import split_speed
 
 __all__ = ["ALIASES", "SlotModel", "cam_friction", "cam_wear", "raceway_kelley_friction", "roller_fluid_friction",
            "roller_friction"]
@@ -163,7 +164,7 @@ def roller_friction(Q, u_m, slide_roll_ratio, eta0, E_reduced, effusivity, conta
     correlation's validity (:attr:`camcontact.models.friction.Kelley.validity`, slide-to-roll ratio in
     [0.01, 2]; False for unloaded rollers, which have no contact); ``friction_validity``: "ok" or why
     the loaded contacts lie outside it (the coefficient is still the correlation's value)."""
-    u1, u2 = u_m * (1 + 0.5 * slide_roll_ratio), u_m * (1 - 0.5 * slide_roll_ratio)
+    u1, u2 = split_speed(u_m, slide_roll_ratio)
     loaded = Q > 0.0
     kelley = Kelley()
     inside = bool(kelley.inside_validity(u1, u2))
@@ -211,7 +212,7 @@ def roller_fluid_friction(traction_model, Q, u_m, slide_roll_ratio, p_h_inner, p
     With the ``mixed`` step's ``asperity_load_fraction_<race>`` and ``h_c_mixed_<race>`` in ``inputs`` (and the
     lubricant's ``boundary_friction``) each contact's coefficient is mu_b f_a + mu_fluid (1 - f_a), the fluid
     shearing the film at its share (reference ``friction_traction_thermal.md`` §2)."""
-    u1, u2 = u_m * (1 + 0.5 * slide_roll_ratio), u_m * (1 - 0.5 * slide_roll_ratio)
+    u1, u2 = split_speed(u_m, slide_roll_ratio)
     loaded = Q > 0.0
     films = {"inner": (p_h_inner, b_inner, h_c_inner), "outer": (p_h_outer, b_outer, h_c_outer)}
     mu = {race: np.full(Q.size, np.nan) for race in RACES}

@@ -24,7 +24,8 @@ __all__ = [
     "FOLLOWER_KINEMATICS", "RACEWAY_KINEMATICS", "ball_cone_motion", "bearing_kinematics", "bearing_surface_speeds",
     "degrees_text",
     "follower_motion",
-    "given_raceway_speeds", "motion_continuity", "pure_rolling_raceway", "raceway_sliding_speed", "surface_kinematics",
+    "given_raceway_speeds", "motion_continuity", "pure_rolling_raceway", "raceway_sliding_speed", "split_speed",
+    "surface_kinematics",
 ]
 
 FOLLOWER_KINEMATICS = ("lift", "follower_velocity", "follower_acceleration", "follower_jerk", "pressure_angle",
@@ -112,12 +113,18 @@ def _slide_roll(u1: float, u2: float) -> float:
     return float(slide_roll_measure(u1, u2))
 
 
+def split_speed(u_m, slide_roll_ratio):
+    """The two surface speeds [m/s] about the entrainment speed u_m [m/s] at the slide/roll ratio s = (u1 - u2)/u_m:
+    (u_m (1 + s/2), u_m (1 - s/2))."""
+    return u_m * (1.0 + 0.5 * slide_roll_ratio), u_m * (1.0 - 0.5 * slide_roll_ratio)
+
+
 @step("surface_speeds", provides=("u1", "u2"))
 def bearing_surface_speeds(u_m, **inputs):
     """Surface speeds [m/s] of ring and roller at a raceway contact, u_m (1 + s/2) and u_m (1 - s/2), with the
     scene's ``slide_roll_ratio`` s (``inputs``; pure rolling, s = 0, without one)."""
-    s = inputs.get("slide_roll_ratio") or 0.0
-    return {"u1": u_m * (1.0 + 0.5 * s), "u2": u_m * (1.0 - 0.5 * s)}
+    u1, u2 = split_speed(u_m, inputs.get("slide_roll_ratio") or 0.0)
+    return {"u1": u1, "u2": u2}
 
 
 @step("kinematics", provides=RACEWAY_KINEMATICS, model="pure_rolling")
@@ -125,7 +132,7 @@ def pure_rolling_raceway(ring_speed, slide_roll_ratio, pitch_diameter, gamma):
     """Surface speeds [m/s] of a raceway contact rolling purely in the cage frame,
     u = (pi d_m / 2)(1 - gamma^2) n (ring speed n [rev/s]), split by the contact's slide/roll ratio."""
     rolling = 0.5 * math.pi * pitch_diameter * (1.0 - gamma**2) * ring_speed
-    u1, u2 = rolling * (1.0 + 0.5 * slide_roll_ratio), rolling * (1.0 - 0.5 * slide_roll_ratio)
+    u1, u2 = split_speed(rolling, slide_roll_ratio)
     return {"u_raceway": u1, "u_roller": u2, "u_m": rolling, "slide_roll_measure": _slide_roll(u1, u2),
             "speed_basis": f"pure rolling in the cage frame (d_m = {pitch_diameter * 1e3:.4g} mm), "
                            f"slide/roll {slide_roll_ratio:g}"}
