@@ -27,9 +27,10 @@ power, the energy per turn, the peak coefficient and the cost per angle, into ``
 
 ``--traction`` climbs the traction ladder of the ball-cone CVT at one operating point (3000 rpm, 150 W, ratio
 1.5) — the thesis's constant-Ct check, FASTSIM with the Hertz (thesis) and the parabolic (Kalker) pressure, the
-EHL film's Eyring traction with spin isothermal and thermal on the Hertz pressure, and both on the numerical
-point-contact pressure — reporting creepage, capacity, margin, losses, efficiency and the cost per operating
-point, into ``accuracy_vs_time_traction.csv``.
+EHL film's Eyring traction with spin isothermal and thermal on the Hertz pressure, both with the asperities'
+share (``mixed``: Greenwood–Tripp load sharing, Coulomb asperity friction), and both on the numerical
+point-contact pressure — reporting creepage, capacity, margin, losses, efficiency, the asperities' share and
+the cost per operating point, into ``accuracy_vs_time_traction.csv``.
 
     python benchmarks/accuracy_vs_time.py --traction          # numerical pressure on 257^2 (level 5)
     python benchmarks/accuracy_vs_time.py --traction --quick  # 65^2 (level 3), one run each (the tests run this)
@@ -351,6 +352,8 @@ TRACTION_LADDER = (
     ("FASTSIM, Kalker's parabolic pressure", "fastsim", "hamrock_dowson", set()),
     ("EHL Eyring isothermal, Hertz pressure", "ehl_traction", "hamrock_dowson", set()),
     ("EHL Eyring thermal, Hertz pressure", "ehl_traction", "hamrock_dowson", {"thermal"}),
+    ("EHL Eyring + asperities (mixed), Hertz pressure", "ehl_traction", "hamrock_dowson", {"mixed"}),
+    ("EHL Eyring thermal + asperities (mixed), Hertz", "ehl_traction", "hamrock_dowson", {"thermal", "mixed"}),
     ("EHL Eyring isothermal, numerical pressure", "ehl_traction", "multigrid", set()),
     ("EHL Eyring thermal, numerical pressure", "ehl_traction", "multigrid", {"thermal"}),
 )
@@ -387,7 +390,7 @@ def traction_rows(level: int, repeats: int) -> pd.DataFrame:
         outputs = list(TRACTION_OUTPUTS[:3])
         if traction is not None:
             models["traction"] = Fastsim(pressure="hertz") if traction == "fastsim_hertz" else traction
-            outputs = list(TRACTION_OUTPUTS)
+            outputs = list(TRACTION_OUTPUTS) + (["asperity_load_fraction_in"] if "mixed" in effects else [])
         times, result = [], None
         for k in range(repeats + 1):  # the first run compiles the kernels it meets: not timed
             start = time.perf_counter()
@@ -406,6 +409,7 @@ def traction_rows(level: int, repeats: int) -> pd.DataFrame:
                      "traction margin [%]": 100.0 * margin, "spin loss in [W]": value.get("spin_loss_in", math.nan),
                      "creep loss in [W]": value.get("creep_loss_in", math.nan),
                      "efficiency [%]": 100.0 * value.get("efficiency", math.nan),
+                     "asperity share in [%]": 100.0 * value.get("asperity_load_fraction_in", math.nan),
                      "median time [ms]": 1e3 * statistics.median(times)})
     frame = pd.DataFrame(rows)
     frame["efficiency vs last rung [pp]"] = frame["efficiency [%]"] - frame["efficiency [%]"].iloc[-1]

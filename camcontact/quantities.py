@@ -257,7 +257,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
             _q(f"Lambda_{side}", "", "", f"h_min / composite roughness at the {side}put contact"),
             _q(f"creepage_{side}", "", "", f"longitudinal creepage transmitting F_t at the {side}put contact"),
             _q(f"slip_fraction_{side}", "", "", f"slipping share of the contact area at the {side}put contact"),
-            _q(f"traction_regime_{side}", None, None, f"partial slip, or gross slip, at the {side}put contact"),
+            _q(f"traction_regime_{side}", None, None, f"viscous, plateau or gross slip (ehl_traction); partial slip or "
+                                                      f"gross slip (fastsim) at the {side}put contact"),
             _q(f"tau0_{side}", "Pa", "MPa", f"life-relevant subsurface shear at the {side}put contact"),
             _q(f"z0_{side}", "m", "um", f"depth of tau0 at the {side}put contact"),
             _q(f"life_ball_{side}", "s", "h", f"L10 of one ball's {side}put track"),
@@ -274,6 +275,15 @@ QUANTITIES: dict[str, QuantitySpec] = {
             _q(f"power_loss_{side}", "W", "W", f"power loss of one {side}put contact (creep + spin)"),
             _q(f"traction_temperature_rise_{side}", "K", "K", f"lumped film temperature rise at the {side}put contact"),
             _q(f"traction_valid_{side}", None, None, f"True where the {side}put contact's thermal balance converged"),
+            _q(f"asperity_load_fraction_{side}", "", "", f"share of the normal force the asperities carry at the "
+                                                         f"{side}put contact (Greenwood-Tripp, JGP split)"),
+            _q(f"h_c_mixed_{side}", "m", "um", f"central film at the fluid's share of the load, {side}put contact"),
+            _q(f"Lambda_mixed_{side}", "", "", f"h_c_mixed / composite roughness at the {side}put contact"),
+            _q(f"lubrication_regime_{side}", None, None, f"boundary, mixed or full_film at the {side}put contact"),
+            _q(f"asperity_capacity_{side}", "", "", f"share of the load the asperities carry at zero separation, "
+                                                    f"{side}put contact"),
+            _q(f"mixed_valid_{side}", None, None, f"True where the load-sharing model can reach the boundary regime at "
+                                                  f"the {side}put contact"),
         )),
         _q("psi_total", "", "", "sum of the input and output spin coefficients"),
         _q("efficiency", "", "", "1 - contact power loss / transmitted power"),

@@ -198,6 +198,22 @@ print(side_by_side.to_frame()[columns].T.to_string())
 side_by_side.plot(panels=("losses", "life")).savefig("cvt_losses.png", dpi=80)
 
 # %% [markdown]
+# At 60 rpm the film is thinner than the roughness (Λ ≈ 0.09). The `mixed` effect lets the asperities
+# share the load (Greenwood–Tripp, Johnson–Greenwood–Poon): the film carries the rest on its own (thinner)
+# film and the asperities add Coulomb friction (the fluid's `boundary_friction`, 0.12) along the local
+# sliding, which with spin is everywhere but the pole. At 6.9 GPa the asperities can carry only a few
+# percent before they touch (`asperity_capacity`); the model cannot thin the film further and says so
+# (`mixed_valid` False): a drive run here wears its surfaces, whatever the traction margin says.
+
+# %%
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")
+    mixed = cc.Analysis(balanced, effects={"elasticity", "piezoviscosity", "spin", "mixed"}).run()
+columns = ["Lambda_in [-]", "asperity_load_fraction_in [-]", "asperity_capacity_in [-]", "lubrication_regime_in",
+           "mixed_valid_in", "traction_capacity_in [N]", "spin_loss_in [W]", "efficiency [-]"]
+print(mixed.to_frame()[columns].T.to_string())
+
+# %% [markdown]
 # ## 6. Where the drive works: efficiency and traction-margin maps
 # A traction drive is designed on two maps over its operating range: the traction margin of its weaker
 # contact (1 − F_t/capacity; below zero the balls slip grossly) and the efficiency where it holds.

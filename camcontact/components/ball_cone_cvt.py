@@ -87,6 +87,10 @@ class BallConeCVT(Component):
         static load rating of ball bearings other than self-aligning, ISO 76:2006 §6.1.1). Above it
         the report flags ``stress_limit_exceeded`` and warns; set a lower value for a design-practice
         limit (e.g. a traction drive's fatigue rating).
+    asperity_density, asperity_radius : Quantity or str, optional
+        Summit density η [1/length²] and radius β [length] (> 0) of the composite roughness of the ball-cone
+        contacts for the ``mixed`` effect (Greenwood–Tripp), as :class:`~camcontact.components.LineContact`'s
+        (defaults there: η β σ = σ/β = 0.05, orders of magnitude, not data).
     name : str
     """
 
@@ -108,6 +112,8 @@ class BallConeCVT(Component):
     clamping: str = attrs.field(default="axial_balance", validator=one_of("axial_balance", "thesis"))
     contact_stress_limit: Quantity = quantity_field("[pressure]", default=ISO76_BALL_CONTACT_STRESS,
                                                     validators=[positive("Pa")])
+    asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
+    asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
     def __attrs_post_init__(self) -> None:
         si, where = self.si, f"BallConeCVT {self.name!r}"

@@ -33,6 +33,16 @@ Low-creep limit (the tests' closed form). A Newtonian film, tau = eta(p) |w|/h, 
 F_x = -(V nu_x/h) int eta dA, F_y = -(V nu_y/h) int eta dA and M_z = -(V phi/h) int eta (x^2 + y^2) dA;
 for a constant viscosity int eta dA = eta0 pi a b and int eta (x^2 + y^2) dA = eta0 pi a b (a^2 + b^2)/4.
 
+Mixed lubrication (optional). Where the asperities carry a share of the load (Johnson, Greenwood & Poon
+1972; :mod:`camcontact.models.mixed_lubrication`), the film carries the rest: the pressure above is the
+fluid's (p_h x its share, on the film at that share) and the asperities add a uniform pressure p_a over
+the Hertz ellipse that shears with the boundary friction coefficient mu_b along the local sliding,
+tau_a = mu_b p_a w/|w| (the Coulomb asperity friction of mixed-lubrication friction models, Gelinck &
+Schipper 2000 with the sliding direction of each point). The asperities are rigid-Coulomb: without spin
+a force below mu_b p_a pi a b is held with them sticking (creepage -> 0, no loss; their elastic creep is
+left out); with spin every point but the pole slides, and F_x(nu_x) stays continuous. Their dissipation
+mu_b p_a |w| joins the film's in the losses and the thermal balance.
+
 Thermal (optional). A lumped contact temperature rise dT = C q with q = P/(pi a b) the mean heat flux:
 C = the contact-mean flash temperature of a uniform source per unit flux (Jaeger/Blok band source strip
 by strip over the ellipse, :func:`camcontact.contact.contact_temperature.band_flash_per_flux` x 2/3 x
@@ -54,6 +64,8 @@ integrand has a kink there: the forces converge at first to second order in the 
 References
 ----------
 Johnson, K.L. & Tevaarwerk, J.L. (1977) Proc. R. Soc. Lond. A 356:215–236 (Eyring film).
+Johnson, K.L., Greenwood, J.A. & Poon, S.Y. (1972) Wear 19:91–108; Gelinck, E.R.M. & Schipper, D.J. (2000)
+Tribol. Int. 33:175–181 (mixed lubrication: load share and asperity friction).
 Tevaarwerk, J.L. & Johnson, K.L. (1979) The influence of fluid rheology on the performance of traction
 drives, J. Lubr. Technol. 101(3):266–273 (traction with creep, side slip and spin over the contact).
 Bair, S. & Winer, W.O. (1979) J. Lubr. Technol. 101:251–257 (limiting shear stress).
@@ -243,12 +255,18 @@ class SpinTractionContact:
     field : PressureField, optional
         The numerical pressure and film: its pressurised nodes replace the Hertz ellipse's quadrature (a, b,
         p_h and the central ``film_thickness`` still set the thermal model's band and film).
+    asperity_pressure : float
+        p_a [Pa], >= 0: the asperities' uniform pressure over the Hertz ellipse (mixed lubrication; ``p_h``
+        and ``film_thickness`` are then the fluid's share and film). Default 0: full film.
+    boundary_friction : float
+        mu_b [-], >= 0: the asperities' Coulomb coefficient.
     """
 
     def __init__(self, *, a, b, p_h, film_thickness, rolling_speed, eta0, log_viscosity_ratio: Callable,
                  rheology: str = "eyring", eyring_stress=None, limiting_shear_stress=0.0, limiting_shear_slope=None,
                  thermal: TractionThermal | None = None, n_radial: int = DEFAULT_RADIAL,
-                 n_angular: int = DEFAULT_ANGULAR, field: PressureField | None = None):
+                 n_angular: int = DEFAULT_ANGULAR, field: PressureField | None = None, asperity_pressure=0.0,
+                 boundary_friction=0.0):
         check_film_law("spin traction", rheology, log_viscosity_ratio, thermal)
         for name, value, low in (("n_radial", n_radial, 4), ("n_angular", n_angular, 8)):
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not low <= value <= 1024:
@@ -269,7 +287,9 @@ class SpinTractionContact:
         else:
             self.x, self.y, pressure, film, self.dA = field.nodes()
         self.area = math.pi * self.a * self.b
-        self.normal_force = float(np.sum(pressure * self.dA))
+        self.asperity_pressure = _number("asperity_pressure", asperity_pressure, low=0.0)
+        self.asperity_shear = self.asperity_pressure * _number("boundary_friction", boundary_friction, low=0.0)
+        self.normal_force = float(np.sum(pressure * self.dA)) + self.asperity_pressure * self.area
         self.law, self.eta0 = log_viscosity_ratio, eta0
         self.tau0 = (_number("eyring_stress", eyring_stress, low=0.0, low_inclusive=False) if rheology == "eyring"
                      else None)
@@ -307,6 +327,9 @@ class SpinTractionContact:
         with np.errstate(divide="ignore"):
             L = log_base + np.log(speed) - dT_beta
         tau, limited = film_shear_stress(L, self.rheology, self.tau0, tau_limit)
+        if self.asperity_shear > 0.0:  # Coulomb asperities inside the Hertz ellipse, where the surfaces slide
+            inside = (x / self.a) ** 2 + (y / self.b) ** 2 < 1.0
+            tau = tau + np.where(inside & (speed > 0.0), self.asperity_shear, 0.0)
         return wx, wy, speed, tau, np.zeros(tau.shape, dtype=bool) if limited is None else limited
 
     def _flux(self, nu_x, nu_y, phi, dT_beta) -> float:

@@ -320,13 +320,15 @@ def mixed_line_contact(w, R, E_reduced, u_m, eta0, alpha, sigma, asperity_densit
 
 
 def mixed_point_contact(F, Rx, Ry, E_reduced, u_m, eta0, alpha, sigma, asperity_density, asperity_radius, *,
-                        piezoviscosity: bool = True):
+                        piezoviscosity: bool = True, film_scale=1.0):
     """Load sharing of a rough lubricated elliptical contact (JGP 1972 with the Nijenbanning film).
 
     As :func:`mixed_line_contact` with the load F [N], reduced radii Rx (entrainment direction)
     and Ry [m], the Nijenbanning–Venner–Moes (1994) central film at load F/gamma_1 and modulus
     E'/gamma_1, and the asperity pressure uniform over the Hertz ellipse pi a_x a_y of the full
     load (:func:`camcontact.contact.hertz_elliptical.hertz_elliptical`, exact ellipticity).
+    ``film_scale`` [-], > 0, as for the line: h_c(scene) / h_c(Nijenbanning, full load) puts the load
+    sharing on a scene's own film (another formula, a numerical solution).
 
     Returns
     -------
@@ -345,9 +347,9 @@ def mixed_point_contact(F, Rx, Ry, E_reduced, u_m, eta0, alpha, sigma, asperity_
         _positive(name, "E_reduced", E_reduced, "Pa"), _finite(name, "u_m", u_m, "m/s"),
         _positive(name, "eta0", eta0, "Pa*s"), _non_negative(name, "alpha", alpha, "1/Pa"),
         _positive(name, "sigma", sigma, "m"), _positive(name, "asperity_density", asperity_density, "1/m^2"),
-        _positive(name, "asperity_radius", asperity_radius, "m"),
+        _positive(name, "asperity_radius", asperity_radius, "m"), _positive(name, "film_scale", film_scale, "-"),
     )
-    F_, Rx_, Ry_, E_, u_, eta_, alpha_, sigma_, density_, radius_ = (np.array(a, dtype=float) for a in arrays)
+    F_, Rx_, Ry_, E_, u_, eta_, alpha_, sigma_, density_, radius_, scale_ = (np.array(a, dtype=float) for a in arrays)
     speed = np.abs(u_)
     film_model = Nijenbanning(piezoviscosity=piezoviscosity)
     a_x = np.empty(F_.shape)
@@ -359,8 +361,8 @@ def mixed_point_contact(F, Rx, Ry, E_reduced, u_m, eta0, alpha, sigma, asperity_
     moving = speed > 0.0
 
     def film_of_fluid_fraction(mask, phi):
-        return np.asarray(film_model.evaluate(Rx_[mask], Ry_[mask], F_[mask] * phi, E_[mask] * phi, speed[mask],
-                                              eta_[mask], alpha_[mask])["h_c"], dtype=float)
+        return scale_[mask] * np.asarray(film_model.evaluate(Rx_[mask], Ry_[mask], F_[mask] * phi, E_[mask] * phi,
+                                                             speed[mask], eta_[mask], alpha_[mask])["h_c"], dtype=float)
 
     fraction, film = _solve_load_share(F_, area, film_of_fluid_fraction, sigma_, density_, radius_, E_, moving)
     smooth = np.zeros(F_.shape)

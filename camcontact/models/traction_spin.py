@@ -102,12 +102,26 @@ class EhlTraction(TractionModel):
     n_angular: int = attrs.field(default=DEFAULT_ANGULAR, validator=_count(8))
 
     def contact(self, a_rolling, b_lateral, p_h, h_c, rolling_speed, lubricant_state, effusivity=None,
-                fluid=None, field=None) -> SpinTractionContact:
+                fluid=None, field=None, asperity_load_fraction=0.0, boundary_friction=0.0) -> SpinTractionContact:
         """The contact prepared for many creepage states; ``fluid`` overrides :attr:`fluid`; ``field`` (a
-        :class:`~camcontact.contact.spin_traction.PressureField`) puts it on a numerical pressure and film."""
+        :class:`~camcontact.contact.spin_traction.PressureField`) puts it on a numerical pressure and film.
+
+        Mixed lubrication: ``asperity_load_fraction`` f [-] of the Hertz load (p_h over the ellipse) is carried
+        by the asperities at the uniform pressure f 2 p_h / 3 with the Coulomb coefficient ``boundary_friction``
+        mu_b [-]; the film carries (1 - f) p_h with the Hertz shape on its film ``h_c`` (the film at the fluid's
+        share; Johnson, Greenwood & Poon 1972). Not with a ``field`` (a smooth surfaces' numerical pressure)."""
+        share = float(asperity_load_fraction)
+        if not 0.0 <= share < 1.0:
+            raise InputError(f"traction model 'ehl_traction': asperity_load_fraction = {asperity_load_fraction!r}; "
+                             "allowed: 0 <= f < 1 (the film carries the rest)")
+        if share > 0.0 and field is not None:
+            raise InputError("traction model 'ehl_traction': an asperity_load_fraction with a numerical pressure field;"
+                             " allowed: one of them (the field is the smooth surfaces' pressure of the whole load)")
         shear_law = fluid or self.fluid or EyringTraction()
-        return SpinTractionContact(a=a_rolling, b=b_lateral, p_h=p_h, film_thickness=h_c, rolling_speed=rolling_speed,
-                                   n_radial=self.n_radial, n_angular=self.n_angular, field=field,
+        return SpinTractionContact(a=a_rolling, b=b_lateral, p_h=(1.0 - share) * p_h, film_thickness=h_c,
+                                   rolling_speed=rolling_speed, n_radial=self.n_radial, n_angular=self.n_angular,
+                                   field=field, asperity_pressure=share * 2.0 * p_h / 3.0,
+                                   boundary_friction=boundary_friction,
                                    **shear_law.film_rheology(lubricant_state, effusivity))
 
     def solve(self, tangential_force, spin_creepage, contact: SpinTractionContact) -> dict[str, Any]:

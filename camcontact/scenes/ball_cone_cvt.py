@@ -17,6 +17,13 @@ A :class:`~camcontact.components.LoadedBallConeCVT` becomes the steps
     the EHL film of each contact by a point-contact film model (slot ``film``, default
     ``"hamrock_dowson"``; ``"multigrid"`` is the numerical point-contact solution), pure rolling at
     the rolling speed; Lambda with the roughness;
+``mixed`` (the ``mixed`` effect)
+    Greenwood–Tripp asperity load sharing at each contact on its film (Johnson, Greenwood & Poon 1972,
+    :func:`camcontact.steps.ehl_friction.ball_cone_mixed`): the asperities' share of the normal force, the
+    film at the fluid's share, Lambda of it, the regime and ``mixed_valid``; the EHL traction then shears
+    the film at the fluid's share and adds the asperities' Coulomb friction (the lubricant's
+    ``boundary_friction``) along the local sliding. Needs the ``ehl_traction`` model and a film formula;
+    asperity parameters ``BallConeCVT.asperity_density``/``asperity_radius`` (defaults: orders of magnitude);
 ``traction``
     the creepage that transmits F_t at each contact with its spin, the capacity and margin, gross
     slip (boolean), the spin moment and the creep and spin losses (:mod:`camcontact.steps.traction`).
@@ -52,6 +59,7 @@ from ..contact.geometry import reduced_modulus
 from ..contact.hertz_elliptical import METHODS as HERTZ_METHODS
 from ..contact.slice_stress import MEASURES
 from ..errors import InputError
+from ..units import format_quantity
 from ..models.film_multigrid_point import MultigridPoint
 from ..models.life_lundberg_palmgren import LundbergPalmgren
 from ..models.traction import Fastsim
@@ -64,7 +72,7 @@ from ..steps.kinematics import ball_cone_motion
 from ..steps.life import ball_cone_life
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import ball_cone_slice_stresses
-from ..steps.ehl_friction import fluid_traction_model
+from ..steps.ehl_friction import BALL_CONE_MIXED_OUTPUTS, ball_cone_mixed, ehl_friction_inputs, fluid_traction_model
 from ..steps.traction import ball_cone_efficiency, ball_cone_ehl_traction, ball_cone_traction
 from .ball_cone_cvt_plots import plot_ball_cone_cvt
 
@@ -72,7 +80,7 @@ __all__ = ["SIDES", "ball_cone_cvt_inputs", "build_ball_cone_cvt"]
 
 SIDES = ("in", "out")
 SLOTS = ("hertz", "film", "traction", "stress", "life")
-SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "spin", "thermal"})
+SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "spin", "thermal", "mixed"})
 DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "spin"})
 #: the traction models the slot takes
 TRACTION_MODELS = (EhlTraction, Fastsim)
@@ -101,7 +109,11 @@ HINTS = {
     "sigma": "set BallConeCVT.roughness (RMS of each surface)",
     "effusivity": "give the CVT's Material its thermal data (conductivity, density, specific heat) for the "
                   "thermal traction",
+    "asperity_density": "give BallConeCVT.asperity_density and asperity_radius",
 }
+#: what the EHL traction reads from the mixed step and the lubricant with ``mixed``
+MIXED_TRACTION_READS = (*(f"{q}_{side}" for q in ("asperity_load_fraction", "h_c_mixed") for side in SIDES),
+                        "boundary_friction")
 
 
 def ball_cone_cvt_inputs(scene: LoadedBallConeCVT, effects: frozenset) -> dict[str, Any]:
@@ -151,6 +163,28 @@ def slot_models(models: Mapping[str, Any]) -> dict[str, Any]:
     return chosen
 
 
+def mixed_inputs(scene: LoadedBallConeCVT, effects: frozenset, traction: Any, film_model: Any) -> dict[str, Any]:
+    """The boundary friction and asperity parameters of the ``mixed`` effect ({} without it), or an InputError
+    for what it cannot honour: a dry-contact traction model (FASTSIM has no film to share the load with), the
+    numerical film (its pressure is the smooth surfaces' of the whole load), smooth surfaces."""
+    if "mixed" not in effects:
+        return {}
+    cvt = scene.cvt
+    if not isinstance(traction, EhlTraction):
+        raise InputError(f"ball_cone_cvt scene: the 'mixed' effect shares the load between the film and the asperities "
+                         f"and needs the traction model 'ehl_traction', got {traction!r} (FASTSIM is a dry contact "
+                         "theory with a Coulomb bound)")
+    if isinstance(film_model, MultigridPoint):
+        raise InputError("ball_cone_cvt scene: the 'mixed' effect needs a film formula (film = 'hamrock_dowson' or "
+                         "'nijenbanning'); the numerical point film is of smooth surfaces under the whole load")
+    if cvt.roughness is not None and cvt.si.roughness == 0.0:
+        raise InputError(f"ball_cone_cvt scene: the 'mixed' effect needs rough surfaces; BallConeCVT {cvt.name!r}"
+                         f".roughness = {format_quantity(cvt.roughness)} (allowed: > 0)")
+    roughness = None if cvt.roughness is None else cvt.si.roughness
+    return ehl_friction_inputs(cvt.lubricant, (), (roughness, roughness), effects,
+                               asperity_density=cvt.si.asperity_density, asperity_radius=cvt.si.asperity_radius)
+
+
 @scene_builder(LoadedBallConeCVT)
 def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
                         effects: frozenset | None) -> SceneGraph:
@@ -170,17 +204,22 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
         *(Step.of(film_parameter, name=f"lambda_{side}", rename={"h": f"h_min_{side}", "sigma1": "sigma",
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{side}"})
           for side in SIDES),
+        *([Step.of(ball_cone_mixed)] if "mixed" in effects else []),
         (Step.of(ball_cone_ehl_traction, optional=("pressure_field_in", "pressure_field_out", "numerical_pressure")
                  + (() if "thermal" in effects else ("effusivity",)),
-                 extra=("effusivity",) if "thermal" in effects else ())
+                 extra=(("effusivity",) if "thermal" in effects else ())
+                 + (MIXED_TRACTION_READS if "mixed" in effects else ()))
          if ehl else Step.of(ball_cone_traction)),
         Step.of(ball_cone_efficiency), Step.of(ball_cone_slice_stresses), Step.of(ball_cone_life),
     ]
     inputs = {**ball_cone_cvt_inputs(scene, effects), **chosen, "film_model": film_model,
-              "numerical_pressure": isinstance(film_model, MultigridPoint)}
+              "numerical_pressure": isinstance(film_model, MultigridPoint),
+              **mixed_inputs(scene, effects, traction, film_model)}
     if ehl:
         inputs["fluid_model"] = fluid_traction_model(scene.cvt.lubricant, effects | {"non_newtonian"},
                                                      traction.fluid or "eyring")
     return SceneGraph(kind="ball_cone_cvt", inputs=inputs, steps=tuple(steps),
-                      default_outputs=DEFAULT_OUTPUTS + MODEL_OUTPUTS[type(traction)], input_hints=HINTS,
-                      plotter=plot_ball_cone_cvt, effects=effects)
+                      default_outputs=DEFAULT_OUTPUTS + MODEL_OUTPUTS[type(traction)]
+                      + (BALL_CONE_MIXED_OUTPUTS if "mixed" in effects else ()), input_hints=HINTS,
+                      plotter=plot_ball_cone_cvt, effects=effects,
+                      effect_outputs=frozenset(BALL_CONE_MIXED_OUTPUTS) if "mixed" in effects else frozenset())

@@ -20,12 +20,13 @@ from .. import registry
 from ..dynamics.roller_follower import coulomb_table, slip_grid
 from ..errors import InputError
 from ..models.film_line import Moes
-from ..models.mixed_lubrication import mixed_line_contact
+from ..models.film_point import Nijenbanning
+from ..models.mixed_lubrication import mixed_line_contact, mixed_point_contact
 from ..step_graph import step
 from .contact import RACES
 
 __all__ = ["ASPERITY_DEFAULTS", "EHL_EFFECTS", "FLUID_TRACTION_LIMIT", "MIXED_FRICTION_READS", "contact_ehl_friction", "ehl_friction_inputs",
-           "ehl_sliding_friction", "fluid_traction_model", "fluid_traction_table", "mixed_contact", "mixed_film_cycle", "ROLLER_MIXED_OUTPUTS",
+           "ehl_sliding_friction", "fluid_traction_model", "BALL_CONE_MIXED_OUTPUTS", "ball_cone_mixed", "fluid_traction_table", "mixed_contact", "mixed_film_cycle", "ROLLER_MIXED_OUTPUTS",
            "roller_mixed"]
 
 #: effects that replace Coulomb friction by the EHL friction of the film
@@ -280,4 +281,37 @@ def roller_mixed(Q, roller_length, contact_radii, E_reduced, u_m, eta0, alpha, p
         values["asperity_load_fraction"][Q <= 0.0] = np.nan  # no contact: no share (the regime says why)
         for q in ("asperity_load_fraction", "h_c_mixed", "lubrication_regime", "mixed_valid"):
             out[f"{q}_{race}"] = values[q]
+    return out
+
+
+#: the per-contact outputs of :func:`ball_cone_mixed` (input and output contact)
+BALL_CONE_MIXED_OUTPUTS = tuple(f"{q}_{side}" for q in MIXED_OUTPUTS for side in ("in", "out"))
+
+
+@step("mixed", provides=BALL_CONE_MIXED_OUTPUTS, model="greenwood_tripp + johnson_greenwood_poon")
+def ball_cone_mixed(normal_force, Rx, Ry, E_reduced, rolling_speed_in, rolling_speed_out, eta0, alpha, piezoviscosity,
+                    h_c_in, h_c_out, sigma, asperity_density, asperity_radius):
+    """Load sharing at the CVT's input and output contact
+    (:func:`camcontact.models.mixed_lubrication.mixed_point_contact`, the composite roughness sqrt 2 sigma of
+    two surfaces of RMS ``sigma`` [m]) on the scene's own film (the Nijenbanning film of each share scaled by
+    h_c / h_c(Nijenbanning, full load)): the asperities' share of the normal force [-], the film at the fluid's
+    share [m], Lambda of it, the regime ("boundary", "mixed", "full_film"), the asperities' capacity
+    A_Hertz p_a(0)/N [-] and ``mixed_valid`` (capacity >= 1 or Lambda >= 1, as :func:`mixed_film_cycle`)."""
+    alpha_effective = alpha if piezoviscosity else 0.0
+    composite = math.hypot(sigma, sigma)
+    out = {}
+    for side, speed, h_c in (("in", rolling_speed_in, h_c_in), ("out", rolling_speed_out, h_c_out)):
+        if not (math.isfinite(h_c) and h_c > 0.0):
+            raise InputError(f"mixed step: the {side}put contact's central film h_c = {h_c!r} m; the load sharing "
+                             "needs a film > 0")
+        smooth = Nijenbanning(piezoviscosity=piezoviscosity).evaluate(Rx, Ry, normal_force, E_reduced, abs(speed),
+                                                                      eta0, alpha_effective)["h_c"]
+        result = mixed_point_contact(normal_force, Rx, Ry, E_reduced, speed, eta0, alpha_effective, composite,
+                                     asperity_density, asperity_radius, piezoviscosity=piezoviscosity,
+                                     film_scale=h_c / float(smooth))
+        values = {"asperity_load_fraction": result["asperity_load_fraction"], "h_c_mixed": result["h_c"],
+                  "Lambda_mixed": result["lambda_ratio"], "lubrication_regime": result["regime"],
+                  "asperity_capacity": result["asperity_capacity"],
+                  "mixed_valid": bool(result["asperity_capacity"] >= 1.0 or result["lambda_ratio"] >= 1.0)}
+        out.update({f"{key}_{side}": value for key, value in values.items()})
     return out

@@ -92,17 +92,25 @@ def ball_cone_ehl_traction(traction_model, fluid_model, a_rolling, a_transverse,
     ``pressure_field_in``/``_out``, the numerical film's pressure and film (the traction is then taken
     over them instead of the Hertz pressure and the central film; None: Hertz) and ``numerical_pressure``
     (the scene's film is numerical: a side without a field — its solution did not converge — falls back
-    to the Hertz pressure with ``traction_valid`` False)."""
+    to the Hertz pressure with ``traction_valid`` False). Mixed lubrication (the ``mixed`` effect):
+    ``asperity_load_fraction_in``/``_out`` and ``h_c_mixed_in``/``_out`` of the mixed step and the lubricant's
+    ``boundary_friction`` — the film carries its share on its own film, the asperities the rest with
+    Coulomb friction along the local sliding (:meth:`~camcontact.models.traction_spin.EhlTraction.contact`)."""
     effusivity = inputs.get("effusivity")
     out = {}
     for side, force, phi, speed, h in (("in", tangential_force_in, spin_in, rolling_speed_in, h_c_in),
                                        ("out", tangential_force_out, spin_out, rolling_speed_out, h_c_out)):
+        mixed = {}
+        if f"asperity_load_fraction_{side}" in inputs:
+            h = inputs[f"h_c_mixed_{side}"]
+            mixed = {"asperity_load_fraction": inputs[f"asperity_load_fraction_{side}"],
+                     "boundary_friction": inputs["boundary_friction"]}
         if not h > 0.0:  # a film model that failed (a numerical film that closed)
             raise InputError(f"traction step: the {side}put contact's central film h_c = {h!r} m; the EHL traction "
                              "needs a film > 0 (a numerical film that did not converge: finer levels, or a film "
                              "formula)")
         contact = traction_model.contact(a_rolling, a_transverse, p_h, h, speed, lubricant_state, effusivity,
-                                         fluid=fluid_model, field=inputs.get(f"pressure_field_{side}"))
+                                         fluid=fluid_model, field=inputs.get(f"pressure_field_{side}"), **mixed)
         solution = traction_model.solve(force, phi if spin else 0.0, contact)
         state = solution.pop("state")
         solution["surface_traction"], solution["traction_map"] = contact.centre_line(state), contact.traction_map(state)

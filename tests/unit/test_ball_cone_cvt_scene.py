@@ -101,7 +101,7 @@ def test_model_slots_and_bad_input():
     with pytest.raises(InputError, match="needs a LundbergPalmgren model"):
         cc.Analysis(point(), models={"life": "iso281"})
     with pytest.raises(InputError, match="do not apply to a ball_cone_cvt scene"):
-        cc.Analysis(point(), effects=["mixed"])
+        cc.Analysis(point(), effects=["compressibility"])
     with pytest.raises(InputError, match="needs a EhlTraction or Fastsim model"):
         cc.Analysis(point(), models={"traction": "eyring"})
     with pytest.raises(InputError, match="sigma: set BallConeCVT.roughness"):

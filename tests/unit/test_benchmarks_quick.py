@@ -97,7 +97,7 @@ def test_accuracy_vs_time_traction_quick(tmp_path):
     frame = _load("accuracy_vs_time").main(["--traction", "--quick", "--out", str(tmp_path)])
     assert (tmp_path / "accuracy_vs_time_traction.csv").exists()
     by = frame.set_index("rung")
-    assert len(by) == 7 and (frame["median time [ms]"] > 0).all()
+    assert len(by) == 9 and (frame["median time [ms]"] > 0).all()
     # the constant-Ct check and FASTSIM share the Coulomb capacity Ct N; the film's traction is lower
     ct = by.loc["constant Ct (thesis check)", "capacity in [N]"]
     assert by.loc["FASTSIM, Kalker's parabolic pressure", "capacity in [N]"] == ct
@@ -105,3 +105,7 @@ def test_accuracy_vs_time_traction_quick(tmp_path):
     # the numerical pressure moves the EHL rung by little at this moderate load (p_h 1.9 GPa)
     hertz, numerical = (by.loc[f"EHL Eyring isothermal, {p} pressure", "efficiency [%]"] for p in ("Hertz", "numerical"))
     assert abs(hertz - numerical) < 1.0
+    # at 3000 rpm the film is thick enough that the asperities carry a trace: the mixed rung is the film's
+    mixed = by.loc["EHL Eyring + asperities (mixed), Hertz pressure"]
+    assert 0.0 < mixed["asperity share in [%]"] < 1.0 and frame["asperity share in [%]"].notna().sum() == 2
+    assert abs(mixed["efficiency [%]"] - hertz) < 0.1

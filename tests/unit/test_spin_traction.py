@@ -251,3 +251,77 @@ def test_bad_pressure_field_is_named(change, match):
         PressureField(**fields)
     with pytest.raises(InputError, match="PressureField"):
         contact(field={"p": 1.0})
+
+
+# ---------------------------------------------------------------------------- mixed lubrication (asperities)
+MU_B, P_A = 0.12, 2.0e8  # boundary friction, asperity pressure [Pa]
+
+
+def test_asperities_add_a_coulomb_shear_along_the_sliding():
+    """Coulomb asperities tau_a = mu_b p_a w/|w| over the ellipse, on top of the film (independent closed forms):
+    pure creep: F_x - F_x(film alone) = -mu_b p_a pi a b for any nu_x > 0 (1e-10: the rule's weights sum to pi);
+    pure spin on a circle: M_z - M_z(film) = -mu_b p_a int r dA = -mu_b p_a 2 pi a^3/3 (1e-9); the load is the
+    film's plus p_a pi a b; the dissipation still splits into creep and spin losses; creep and spin together
+    against the rigid-Coulomb integral by dblquad (the film made negligible)."""
+    film, mixed = contact(), contact(asperity_pressure=P_A, boundary_friction=MU_B)
+    area = math.pi * A * B
+    assert mixed.normal_force == pytest.approx(film.normal_force + P_A * area, rel=1e-12)
+    for nu in (1e-9, 1e-4):
+        assert mixed.evaluate(nu).Fx - film.evaluate(nu).Fx == pytest.approx(-MU_B * P_A * area, rel=1e-10)
+    circle, circle_film = (contact(b=A, asperity_pressure=P_A, boundary_friction=MU_B), contact(b=A))
+    spin = circle.evaluate(0.0, 0.0, 40.0).Mz - circle_film.evaluate(0.0, 0.0, 40.0).Mz
+    assert spin == pytest.approx(-MU_B * P_A * 2 * math.pi * A**3 / 3, rel=1e-9)
+    state = mixed.evaluate(2e-4, 1e-5, 60.0)
+    assert state.power_loss == pytest.approx(state.creep_loss + state.spin_loss, rel=1e-9)
+    # creep with spin: the asperities' force against dblquad of -mu_b p_a (nu - phi y)/|w| (pole inside: 1 %)
+    dry = contact(eta0=1e-30, asperity_pressure=P_A, boundary_friction=MU_B, n_radial=64, n_angular=256)
+    nu, phi = 0.02, 100.0
+
+    def integrand(y, x):
+        wx, wy = nu - phi * y, phi * x
+        return -MU_B * P_A * wx / math.hypot(wx, wy)
+
+    def edge(x):
+        return B * math.sqrt(max(0.0, 1 - (x / A) ** 2))
+
+    pole = nu / phi
+    expected = sum(integrate.dblquad(integrand, -A, A, low, high, epsabs=0, epsrel=1e-9)[0] for low, high in (
+        (lambda x: -edge(x), lambda x: min(max(pole, -edge(x)), edge(x))),
+        (lambda x: min(max(pole, -edge(x)), edge(x)), edge)))
+    assert dry.evaluate(nu, 0.0, phi).Fx == pytest.approx(expected, rel=1e-2)
+
+
+def test_rigid_coulomb_asperities_stick_below_their_bound():
+    """Without spin the asperities hold a force below mu_b p_a pi a b without creep (rigid-Coulomb: creepage 0, no
+    loss); above it the film carries the rest at the creepage a film-only contact needs for that rest."""
+    mixed, film = contact(asperity_pressure=P_A, boundary_friction=MU_B), contact()
+    bound = MU_B * P_A * math.pi * A * B
+    held, _ = mixed.solve_creepage(0.5 * bound)
+    assert abs(held.creepage_x) < 1e-12 and abs(held.power_loss) < 1e-9
+    rest = film.evaluate(-2e-4).Fx
+    state, _ = mixed.solve_creepage(bound + rest)
+    assert state.creepage_x == pytest.approx(-2e-4, rel=1e-8)
+
+
+def test_model_splits_the_hertz_load_between_film_and_asperities():
+    """EhlTraction.contact with an asperity share f: the film at (1 - f) p_h, the asperities at f 2 p_h/3 uniform,
+    so the total load stays 2/3 pi a b p_h; a share outside [0, 1) or with a numerical field is refused."""
+    class State:
+        eta0 = ETA0
+
+        @staticmethod
+        def log_viscosity_ratio(p):
+            return np.zeros_like(p)
+
+    model = EhlTraction(fluid=EyringTraction(limiting_shear_slope=0.088))
+    whole = model.contact(A, B, PH, H, V, State())
+    shared = model.contact(A, B, PH, H, V, State(), asperity_load_fraction=0.3, boundary_friction=MU_B)
+    assert shared.normal_force == pytest.approx(whole.normal_force, rel=1e-12)
+    assert shared.p_h == pytest.approx(0.7 * PH) and shared.asperity_pressure == pytest.approx(0.3 * 2 * PH / 3)
+    for share in (-0.1, 1.0):
+        with pytest.raises(InputError, match=f"asperity_load_fraction = {share!r}"):
+            model.contact(A, B, PH, H, V, State(), asperity_load_fraction=share)
+    with pytest.raises(InputError, match="numerical pressure field"):
+        model.contact(A, B, PH, H, V, State(), field=hertz_field(), asperity_load_fraction=0.1)
+    with pytest.raises(InputError, match="boundary_friction"):
+        contact(asperity_pressure=P_A, boundary_friction=-0.1)

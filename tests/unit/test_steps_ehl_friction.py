@@ -13,10 +13,12 @@ import pytest
 
 import camcontact as cc
 from camcontact import registry
-from camcontact.models.mixed_lubrication import mixed_line_contact
+from camcontact.errors import InputError
+from camcontact.models.film_point import Nijenbanning
+from camcontact.models.mixed_lubrication import mixed_line_contact, mixed_point_contact
 from camcontact.scene_file import load_scene
 from camcontact.models.film_line import Moes
-from camcontact.steps.ehl_friction import (FLUID_TRACTION_LIMIT, contact_ehl_friction, ehl_sliding_friction,
+from camcontact.steps.ehl_friction import (FLUID_TRACTION_LIMIT, ball_cone_mixed, contact_ehl_friction, ehl_sliding_friction,
                                            fluid_traction_table, mixed_contact, mixed_film_cycle, roller_mixed)
 from step_checks import assert_provides
 
@@ -62,6 +64,33 @@ def test_roller_mixed_is_the_load_sharing_of_each_roller_contact():
         assert np.isnan(out[f"asperity_load_fraction_{race}"][0]) and not out[f"mixed_valid_{race}"][0]
     # the conformal outer contact carries a thicker film: a smaller asperity share at equal load
     assert np.all(out["asperity_load_fraction_outer"][1:] < out["asperity_load_fraction_inner"][1:])
+
+
+def test_ball_cone_mixed_shares_the_load_of_each_cvt_contact_on_its_film():
+    """The CVT's contacts (5 kN, Rx 5.6 mm, Ry 7 mm, 0.15 / 0.3 m/s, both surfaces 0.1 um): with the Nijenbanning
+    film as the scene's, each side equals a direct call of the point load-sharing model with the composite
+    roughness sqrt 2 sigma; a scene film 0.6 x Nijenbanning (another formula, a thermal reduction) thins the mixed
+    film and raises the asperity share; the capacity < 1 at Lambda < 1 is flagged (mixed_valid False)."""
+    N, Rx, Ry, speeds = 5.0e3, 5.6e-3, 7.0e-3, {"in": 0.15, "out": 0.3}
+    sigma = np.hypot(0.1e-6, 0.1e-6)
+    density, radius = 0.05 / (2.8e-6 * sigma), 2.8e-6
+    films = {side: Nijenbanning().evaluate(Rx, Ry, N, E, u, STATE.eta0, STATE.alpha)["h_c"]
+             for side, u in speeds.items()}
+    args = (N, Rx, Ry, E, speeds["in"], speeds["out"], STATE.eta0, STATE.alpha, True)
+    out = ball_cone_mixed(*args, films["in"], films["out"], 0.1e-6, density, radius)
+    assert_provides(ball_cone_mixed, out)
+    for side, u in speeds.items():
+        direct = mixed_point_contact(N, Rx, Ry, E, u, STATE.eta0, STATE.alpha, sigma, density, radius)
+        assert out[f"asperity_load_fraction_{side}"] == pytest.approx(direct["asperity_load_fraction"], rel=1e-9)
+        assert out[f"h_c_mixed_{side}"] == pytest.approx(direct["h_c"], rel=1e-9)
+        assert out[f"Lambda_mixed_{side}"] == pytest.approx(direct["h_c"] / sigma, rel=1e-9)
+        assert out[f"mixed_valid_{side}"] == (direct["asperity_capacity"] >= 1 or direct["lambda_ratio"] >= 1)
+    assert out["asperity_load_fraction_in"] > out["asperity_load_fraction_out"]  # slower: thinner film
+    thin = ball_cone_mixed(*args, 0.6 * films["in"], 0.6 * films["out"], 0.1e-6, density, radius)
+    assert thin["h_c_mixed_in"] < out["h_c_mixed_in"]
+    assert thin["asperity_load_fraction_in"] > out["asperity_load_fraction_in"]
+    with pytest.raises(InputError, match="h_c = 0.0"):
+        ball_cone_mixed(*args, 0.0, films["out"], 0.1e-6, density, radius)
 
 
 def test_mixed_film_cycle_shares_the_load_on_the_scenes_own_film():
