@@ -24,6 +24,28 @@ def _register_builtin_scenes() -> None:
 
 step_graph.add_scene_loader(_register_builtin_scenes)
 
+#: user-facing names of deeper modules, imported on first use (``cc.MotionProgram``) to keep the import cheap
+_LAZY = {
+    "MotionProgram": "kinematics.motion_program", "Segment": "kinematics.motion_program",
+    "load_scene": "scene_file", "sweep_frame": "sweep", "run_sweep": "sweep", "read_sweep": "sweep",
+    "cvt_map": "scenes.ball_cone_cvt_map", "plot_cvt_map": "scenes.ball_cone_cvt_map",
+    "stribeck_sweep": "scenes.stribeck", "plot_stribeck_curve": "scenes.stribeck",
+}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        import importlib
+
+        value = getattr(importlib.import_module(f".{_LAZY[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'camcontact' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+
 __all__ = [
     "Analysis",
     "BallConeCVT",
@@ -39,14 +61,24 @@ __all__ = [
     "LoadedBearing",
     "Lubricant",
     "Material",
+    "MotionProgram",
     "PluginLoadWarning",
     "RacewayContact",
+    "Segment",
     "SphericalRollerBearing",
     "Q_",
     "Result",
     "UnknownModelError",
     "ValveTrain",
     "__version__",
+    "cvt_map",
+    "load_scene",
+    "plot_cvt_map",
+    "plot_stribeck_curve",
+    "read_sweep",
     "registry",
+    "run_sweep",
+    "stribeck_sweep",
+    "sweep_frame",
     "ureg",
 ]

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import functools
 import itertools
+import logging
 import time
 import warnings
 from collections.abc import Callable, Iterable, Mapping, Sequence
@@ -47,6 +48,15 @@ from .quantities import QUANTITIES
 from .step_graph import EFFECTS, SceneGraph, Step, StepFailure, StepRecord, builder_for
 
 __all__ = ["Analysis", "Result"]
+
+#: the package's logger: every step that runs at INFO (``camcontact run -v``), with its model and time
+LOGGER = logging.getLogger("camcontact")
+
+
+def _context(model: str, variant: str) -> str:
+    """`` (model, variant v)`` for a log line; empty parts left out."""
+    parts = [part for part in (model, f"variant {variant}" if variant else "") if part]
+    return f" ({', '.join(parts)})" if parts else ""
 
 
 def _model_label(model: Any) -> str:
@@ -97,6 +107,36 @@ def describe_model(model: Model) -> str:
         return f"plugin {info.name!r} ({info.family}) from {info.source}"
     cls = type(model)
     return f"model {model.name!r} ({model.family}, {cls.__module__}.{cls.__qualname__})"
+
+
+def graph_resolver(graph: SceneGraph) -> tuple[dict[str, Step], Callable[[str, tuple[str, ...]], list[str]]]:
+    """The step providing each output of ``graph`` and ``resolve(key, ())``: the inputs missing on the way to
+    ``key`` (an empty list: reachable), each key resolved once; RuntimeError for a graph that provides a name
+    twice or has a cycle (a scene builder's bug)."""
+    providers: dict[str, Step] = {}
+    for step in graph.steps:
+        for name in step.provides:
+            if name in providers:
+                raise RuntimeError(f"scene graph: {name!r} provided by {providers[name].name} and {step.name}")
+            providers[name] = step
+    resolved: dict[str, list[str]] = {}
+
+    def resolve(key: str, chain: tuple[str, ...]) -> list[str]:
+        if key in graph.inputs:
+            return []
+        if key not in providers:
+            return [key]
+        if key in resolved:
+            return resolved[key]
+        if key in chain:
+            raise RuntimeError(f"scene graph cycle through {key!r}")
+        missing: list[str] = []
+        for need in providers[key].requires:
+            missing += resolve(need, chain + (key,))
+        resolved[key] = missing
+        return missing
+
+    return providers, resolve
 
 
 # ----------------------------------------------------------------------------- analysis
@@ -173,30 +213,7 @@ class Analysis:
 
     def _plan(self, models: dict[str, Any]) -> tuple[SceneGraph, tuple[str, ...], list[tuple[Step, int, tuple]]]:
         graph = self._builder(self.scene, models=models, effects=self.effects)
-        providers: dict[str, Step] = {}
-        for step in graph.steps:
-            for name in step.provides:
-                if name in providers:
-                    raise RuntimeError(f"scene graph: {name!r} provided by {providers[name].name} and {step.name}")
-                providers[name] = step
-
-        resolved: dict[str, list[str]] = {}
-
-        def resolve(key: str, chain: tuple[str, ...]) -> list[str]:
-            """Missing inputs on the way to ``key`` (empty list = reachable); each key resolved once."""
-            if key in graph.inputs:
-                return []
-            if key not in providers:
-                return [key]
-            if key in resolved:
-                return resolved[key]
-            if key in chain:
-                raise RuntimeError(f"scene graph cycle through {key!r}")
-            missing: list[str] = []
-            for need in providers[key].requires:
-                missing += resolve(need, chain + (key,))
-            resolved[key] = missing
-            return missing
+        providers, resolve = graph_resolver(graph)
 
         if self.requested is None:
             outputs = tuple(o for o in graph.default_outputs if o in providers
@@ -347,11 +364,13 @@ class Analysis:
                 raise
             failure = StepFailure(step.name, model, variant, step.provides, reason, source=source)
             records.append(StepRecord(step.name, model, version, variant, elapsed, error=reason))
+            LOGGER.info("step %s%s failed after %.1f ms: %s", step.name, _context(model, variant), 1e3 * elapsed, reason)
             outputs = ", ".join(step.provides) if len(step.provides) <= 6 else f"{len(step.provides)} outputs"
             warnings.warn(f"{failure.describe()}; its outputs ({outputs}) are NaN and the other steps ran "
                           "(strict=True raises)", StepFailureWarning, stacklevel=3)
             return {}, failure
         records.append(StepRecord(step.name, model, version, variant, time.perf_counter() - start))
+        LOGGER.info("step %s%s ran in %.1f ms", step.name, _context(model, variant), 1e3 * records[-1].wall_time)
         return produced, None
 
     def sweep(self, grid: Any, *, executor: Any = None, progress: bool | None = None, errors: str = "record",
@@ -389,6 +408,54 @@ class Analysis:
         label = self.variants[0][0] if variant is None else variant
         return [step.name for step, _, _ in self.plans[label][2]]
 
+    def available_outputs(self, variant: str | None = None):
+        """The outputs the scene can give with these models and effects (the first or a given variant), as a
+        pandas DataFrame: ``output``, ``unit`` (the report's), ``description``, ``step`` (that computes it),
+        ``default`` (in the default report), ``per_index`` (an array over the scene's index, e.g. per cam angle)
+        and ``available`` with, where False, the inputs ``missing`` and how to give them. Pass any of them as
+        ``outputs=[...]``; ``camcontact outputs`` prints the same for a scene file.
+
+        Examples
+        --------
+        >>> import camcontact as cc
+        >>> steel = cc.Material(E="210 GPa", nu=0.3)
+        >>> contact = cc.LineContact(body1=cc.Body(material=steel, radius="20 mm"),
+        ...                          body2=cc.Body(material=steel, radius="10 mm"), load="1 kN", length="10 mm")
+        >>> table = cc.Analysis(contact).available_outputs()
+        >>> row = table.set_index("output").loc["p_h"]
+        >>> row["unit"], bool(row["available"]), row["step"]
+        ('MPa', True, 'hertz')
+        """
+        import pandas as pd
+
+        from .report import unit_label
+
+        label = self.variants[0][0] if variant is None else variant
+        if label not in self.plans:
+            raise InputError(f"Analysis.available_outputs: variant {variant!r}; allowed: "
+                             f"{', '.join(repr(v) for v, _ in self.variants)}")
+        graph = self.plans[label][0]
+        providers, resolve = graph_resolver(graph)
+        rows = []
+        for name, step in providers.items():
+            if name not in QUANTITIES:  # internal values (solutions, tables) are not reported
+                continue
+            quantity, missing = QUANTITIES[name], list(dict.fromkeys(resolve(name, ())))
+            rows.append({"output": name, "unit": "" if quantity.si_unit is None else unit_label(quantity.display_unit),
+                         "description": quantity.description, "step": step.name,
+                         "default": name in graph.default_outputs, "per_index": name in graph.per_index,
+                         "available": not missing,
+                         "missing": "; ".join(f"{m}: {graph.input_hints.get(m, 'not given by the scene')}"
+                                              for m in missing)})
+        return pd.DataFrame(rows, columns=["output", "unit", "description", "step", "default", "per_index",
+                                           "available", "missing"])
+
+    def __repr__(self) -> str:
+        graph = self.plans[self.variants[0][0]][0]
+        variants = f", {len(self.variants)} variants" if len(self.variants) > 1 else ""
+        return (f"<Analysis of a {graph.kind} scene{variants}: steps {', '.join(self.steps())}; "
+                f"effects {', '.join(sorted(graph.effects)) or 'none'}>")
+
 
 @attrs.frozen
 class Result:
@@ -410,11 +477,73 @@ class Result:
     failures: tuple[StepFailure, ...] = ()
 
     def __getitem__(self, name: str) -> Any:
-        """SI value of ``name`` (a list with one entry per variant when there are several)."""
+        """SI value of ``name`` (a list with one entry per variant when there are several); :meth:`quantity`
+        gives it with its unit."""
         if name not in self.outputs:
             raise KeyError(f"{name!r} is not among the outputs {self.outputs}")
         values = [row.get(name) for row in self.rows]
         return values[0] if len(values) == 1 else values
+
+    def quantity(self, name: str, unit: str | None = None) -> Any:
+        """``name`` as a pint Quantity in ``unit`` (default: the report's unit; a list per variant when there
+        are several; text and status outputs as they are; an output a variant does not give: None).
+
+        >>> import camcontact as cc
+        >>> steel = cc.Material(E="210 GPa", nu=0.3)
+        >>> contact = cc.LineContact(body1=cc.Body(material=steel, radius="20 mm"),
+        ...                          body2=cc.Body(material=steel, radius="10 mm"), load="1 kN", length="10 mm")
+        >>> print(f"{cc.Analysis(contact, outputs=['p_h']).run().quantity('p_h'):.4g~P}")
+        742.2 MPa
+        """
+        from .units import Q_
+
+        if name not in self.outputs:
+            raise KeyError(f"{name!r} is not among the outputs {self.outputs}")
+        spec = QUANTITIES.get(name)
+        values = [row.get(name) for row in self.rows]
+        if spec is None or spec.si_unit is None:
+            return values[0] if len(values) == 1 else values
+        target = unit if unit is not None else spec.display_unit
+        try:
+            converted = [None if v is None else Q_(np.asarray(v, dtype=float) if np.ndim(v) else float(v),
+                                                   spec.si_unit).to(target) for v in values]
+        except Exception as exc:  # pint: an unknown unit or the wrong dimension
+            raise InputError(f"Result.quantity: {name} [{spec.si_unit or '-'}] in unit = {unit!r}: {exc}") from None
+        return converted[0] if len(converted) == 1 else converted
+
+    def __repr__(self) -> str:
+        from .report import text_table
+
+        frame = self.summary_frame() if self.index is not None else self.to_frame()
+        head = (f"<Result of a {self.kind} scene: {len(self.variants)} variant(s), {len(self.records)} steps in "
+                f"{1e3 * self.wall_time:.1f} ms" + (f"; {len(self.failures)} failed" if self.failures else "")
+                + (f"; per {self.index}: to_frame()" if self.index is not None else "") + ">")
+        lines = text_table(frame).splitlines() if len(frame.columns) else []
+        if len(lines) > 25:
+            lines = lines[:24] + [f"... {len(lines) - 24} more rows: to_frame()"]
+        return "\n".join([head, *lines])
+
+    def _repr_html_(self) -> str:
+        """Jupyter: the scene's values (the cycle summary and the first rows per index for an indexed scene),
+        the failures and the steps that ran with their times."""
+        import html
+
+        frame = self.summary_frame() if self.index is not None else self.to_frame()
+        parts = [f"<p><b>{html.escape(self.kind)}</b> result — {len(self.variants)} variant(s), effects: "
+                 f"{html.escape(', '.join(sorted(self.effects)) or 'none')}; {len(self.records)} steps in "
+                 f"{1e3 * self.wall_time:.1f} ms</p>"]
+        if len(frame.columns):
+            shown = frame.set_index("variant").T if "variant" in frame else frame.T
+            parts.append(shown.to_html(max_rows=60, float_format=lambda v: f"{v:.5g}", header="variant" in frame))
+        if self.index is not None:
+            rows = self.to_frame()
+            parts.append(f"<p>per {html.escape(self.index)} ({len(rows)} rows; all in <code>to_frame()</code>):</p>")
+            parts.append(rows.to_html(max_rows=10, max_cols=12, float_format=lambda v: f"{v:.5g}", index=False))
+        for failure in self.failures:
+            parts.append(f"<p>failed: {html.escape(failure.describe())}</p>")
+        parts.append("<details><summary>steps</summary>"
+                     + self.steps_frame().to_html(index=False, float_format=lambda v: f"{v:.3f}") + "</details>")
+        return "\n".join(parts)
 
     def to_frame(self, units: Mapping[str, str] | None = None):
         """pandas DataFrame, columns ``"name [unit]"`` (see :mod:`camcontact.report`).
@@ -433,7 +562,7 @@ class Result:
         return result_frame(self, units, scalars=True)
 
     def steps_frame(self):
-        """pandas DataFrame of the steps that ran: model, version, variant, wall time [s]."""
+        """pandas DataFrame of the steps that ran: model, version, variant, wall time [ms]."""
         from .report import steps_frame
 
         return steps_frame(self)

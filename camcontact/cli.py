@@ -194,7 +194,7 @@ def _run(args: argparse.Namespace) -> int:
     if args.plot is not None:
         _check_plot(Path(args.plot))
 
-    stdout_closed = not _print_before_run(
+    stdout_closed = not args.quiet and not _print_before_run(
         f"camcontact {__version__} — scene: {_printable(scene.name)}",
         f"steps: {', '.join(analysis.steps())}" + (f"; {len(analysis.variants)} variants" if len(analysis.variants) > 1 else ""))
     with warnings.catch_warnings(record=True) as caught:
@@ -215,6 +215,8 @@ def _run(args: argparse.Namespace) -> int:
         _write(Path(args.plot), "--plot", lambda path: figure.savefig(path, dpi=120))
     if stdout_closed:
         return EXIT_BROKEN_PIPE
+    if args.quiet:  # the files are written; nothing on stdout
+        return 0
 
     print()
     if index is None:
@@ -225,7 +227,7 @@ def _run(args: argparse.Namespace) -> int:
         print()
         every = max(1, len(frame) // (24 * max(1, len(result.variants))))
         shown = frame.iloc[::every] if every > 1 else frame
-        print(f"per {result.index}" + (f" (every {every}th row of {len(frame)}; all rows in the CSV)" if every > 1 else "") + ":")
+        print(f"per {result.index}" + (f" (one row in {every} of {len(frame)}; all rows in the CSV)" if every > 1 else "") + ":")
         with pd.option_context("display.width", 250, "display.max_columns", 40, "display.max_colwidth", 28):
             print(shown.to_string(index=False, float_format=lambda v: f"{v:.5g}"))
     print()
@@ -268,10 +270,11 @@ def _sweep(args: argparse.Namespace) -> int:
     workers = sweeps.worker_count(args.workers, count) if args.workers else 0
     capped = (f"; --workers {args.workers} capped to {workers} ({os.cpu_count() or 1} CPUs, {count} cases)"
               if workers != args.workers else "")
-    print(f"camcontact {__version__} — sweep of {_printable(scene.name)}: {count} cases over "
-          f"{', '.join(scene.sweep)}" + (f" on {workers} worker processes{capped}" if workers else ", serial"))
+    if not args.quiet:
+        print(f"camcontact {__version__} — sweep of {_printable(scene.name)}: {count} cases over "
+              f"{', '.join(scene.sweep)}" + (f" on {workers} worker processes{capped}" if workers else ", serial"))
     options = {"outputs": analysis.requested, "models": analysis.models, "effects": analysis.effects, "units": units,
-               "progress": None if not args.no_progress else False, "table": args.table, "timeout": args.timeout,
+               "progress": None if not (args.no_progress or args.quiet) else False, "table": args.table, "timeout": args.timeout,
                "stream": csv_path, "resume": args.resume, "strict": args.strict}
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SweepInterruptedWarning)  # said below, in one line
@@ -286,6 +289,10 @@ def _sweep(args: argparse.Namespace) -> int:
               f"with: {_sweep_resume_command(args, csv_path)}", file=sys.stderr)
         return EXIT_INTERRUPTED if frame.attrs["interrupted"] else EXIT_FAILURE
     failed = frame.loc[frame["failed"] if "failed" in frame else frame["error"] != "", "case"].nunique()
+    if args.quiet:
+        if args.parquet:
+            _write(Path(args.parquet), "--parquet", lambda path: write_parquet(frame, path))
+        return 0
     with __import__("pandas").option_context("display.width", 250, "display.max_columns", 30):
         print(frame.head(40).to_string(index=False, float_format=lambda v: f"{v:.5g}"))
     if len(frame) > 40:
@@ -331,6 +338,38 @@ def _plugins(args: argparse.Namespace) -> int:
     for warning in caught:
         print(f"warning: {warning.message}", file=sys.stderr)
     return 0
+
+
+def _outputs(args: argparse.Namespace) -> int:
+    """``camcontact outputs``: what a scene file's scene can report (Analysis.available_outputs), the defaults
+    marked, and what the unavailable ones need."""
+    import pandas as pd
+
+    from .scene_file import load_scene
+
+    scene = load_scene(args.scene)
+    table = scene.analysis().available_outputs()
+    shown = pd.DataFrame({"output": table["output"], "unit": table["unit"].where(table["unit"] != "", "text"),
+                          "default": table["default"].map({True: "yes", False: ""}),
+                          "per": table["per_index"].map({True: "index", False: ""}), "step": table["step"],
+                          "description": table["description"]})
+    ready = table["available"]
+    print(f"{_printable(scene.name)}: {int(ready.sum())} outputs (default: {int((ready & table['default']).sum())}); "
+          "ask for any with outputs = [...] in the scene file or Analysis(outputs=[...])")
+    print(_left_aligned(shown[ready]))
+    if not ready.all():
+        print(f"\nneed more input ({int((~ready).sum())}):")
+        print(_left_aligned(table.loc[~ready, ["output", "missing"]]))
+    return 0
+
+
+def _left_aligned(frame: Any) -> str:
+    """A DataFrame of text as left-aligned columns (pandas right-aligns them)."""
+    width = {c: max([len(str(c))] + [len(str(v)) for v in frame[c]]) for c in frame.columns}
+    lines = ["  ".join(str(c).ljust(width[c]) for c in frame.columns).rstrip()]
+    lines += ["  ".join(str(v).ljust(width[c]) for c, v in zip(frame.columns, row)).rstrip()
+              for row in frame.itertuples(index=False)]
+    return "\n".join(lines)
 
 
 def _default_scene(args: argparse.Namespace) -> int:
@@ -407,6 +446,9 @@ def main(argv: list[str] | None = None) -> int:
     parser = _Parser(prog="camcontact", description="Lubricated contacts of machine elements.")
     parser.add_argument("--version", action="version", version=f"camcontact {__version__}")
     parser.add_argument("--debug", action="store_true", help="print the traceback of an error")
+    parser.add_argument("-v", "--verbose", action="count", default=0,
+                        help="log each step as it runs, with its model and time, on stderr (-vv: debug)")
+    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors (the files are written)")
     commands = parser.add_subparsers(dest="command", required=True)
     run = commands.add_parser("run", help="run a scene file (default: the embedded default scene)")
     run.add_argument("scene", nargs="?", help="scene TOML file")
@@ -436,15 +478,43 @@ def main(argv: list[str] | None = None) -> int:
     plugins = commands.add_parser("plugins", help="list the models of the plugin registry")
     plugins.add_argument("--family", help="only this family")
     plugins.set_defaults(handler=_plugins)
+    outputs = commands.add_parser("outputs", help="list the outputs a scene file's scene can give")
+    outputs.add_argument("scene", nargs="?", help="scene TOML file (default: the embedded default scene)")
+    outputs.set_defaults(handler=_outputs)
     default = commands.add_parser("default-scene", help="print the embedded default scene (a template)")
     default.set_defaults(handler=_default_scene)
-    for command in commands.choices.values():  # --debug also after the command
+    for command in commands.choices.values():  # --debug, -v and -q also after the command
         command.add_argument("--debug", action="store_true", default=argparse.SUPPRESS, help="print the traceback of an error")
+        command.add_argument("-v", "--verbose", action="count", default=argparse.SUPPRESS,
+                             help="log each step as it runs on stderr (-vv: debug)")
+        command.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
+                             help="print nothing but errors")
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version, or a usage error (its line is printed)
         return exc.code if isinstance(exc.code, int) else EXIT_INPUT * (exc.code is not None)
+    if args.verbose and args.quiet:
+        _error("-v and -q: choose one")
+        return EXIT_INPUT
+    _configure_logging(args.verbose)
     return _dispatch(args)
+
+
+def _configure_logging(verbosity: int) -> None:
+    """``-v``: the package's INFO records (each step, its model and time) on stderr; ``-vv``: DEBUG too."""
+    import logging
+
+    logger = logging.getLogger("camcontact")
+    for handler in [h for h in logger.handlers if getattr(h, "camcontact_cli", False)]:
+        logger.removeHandler(handler)
+    if verbosity <= 0:
+        return
+    handler = logging.StreamHandler(sys.stderr)
+    handler.camcontact_cli = True  # ours: replaced, not stacked, when main() runs again in one process
+    handler.setFormatter(logging.Formatter("camcontact: %(message)s"))
+    logger.addHandler(handler)
+    logger.setLevel(logging.INFO if verbosity == 1 else logging.DEBUG)
+    logger.disabled = False  # a library's logging.config (dask's) may have disabled the loggers it found
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
@@ -10,23 +11,42 @@ import pandas as pd
 
 from .errors import InputError
 from .quantities import QUANTITIES, spec
-from .units import Q_
+from .units import Q_, ureg
 
 if TYPE_CHECKING:  # pragma: no cover
     from .analysis import Result
 
-__all__ = ["column_name", "convert", "result_frame", "steps_frame", "text_table", "unexplained_values"]
+__all__ = ["column_name", "convert", "result_frame", "steps_frame", "text_table", "unexplained_values", "unit_label"]
 
 
-def _unit_label(unit: str) -> str:
+_SUPERSCRIPT = str.maketrans("0123456789-.", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻·")
+
+
+def _symbol(match: re.Match) -> str:
+    try:
+        return ureg.get_symbol(match.group(0))
+    except Exception:  # pint: not a unit name (cannot happen for a unit that parsed)
+        return match.group(0)
+
+
+def unit_label(unit: str) -> str:
+    """A unit as engineers write it, in the order it is given: ``"N*m"`` -> ``"N·m"``, ``"W/(m*K)"`` ->
+    ``"W/(m·K)"``, ``"mm^2/s"`` -> ``"mm²/s"``, ``"um"`` -> ``"µm"``, ``""`` -> ``"-"`` (pint's own format
+    sorts the factors: "m·N", "W/K/m"). InputError for a unit pint does not know."""
     if unit == "":
         return "-"
-    return f"{Q_(1.0, unit).units:~P}".replace(" ", "")
+    try:
+        ureg.parse_units(unit)
+    except Exception as exc:  # pint: undefined unit or syntax
+        raise InputError(f"unknown unit {unit!r}: {exc}") from None
+    text = re.sub(r"(?:\^|\*\*)\s*(-?[0-9.]+)", lambda m: m.group(1).translate(_SUPERSCRIPT), unit.strip())
+    text = re.sub(r"[A-Za-zµΩ_]+", _symbol, text)
+    return re.sub(r"\s*\*\s*|\s+", "·", text)
 
 
 def column_name(name: str, unit: str | None) -> str:
     """``"h_min [µm]"``; text quantities keep their bare name."""
-    return name if unit is None else f"{name} [{_unit_label(unit)}]"
+    return name if unit is None else f"{name} [{unit_label(unit)}]"
 
 
 def convert(value: Any, si_unit: str, unit: str, name: str) -> Any:

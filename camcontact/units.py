@@ -58,6 +58,9 @@ __all__ = [
 #: The one unit registry of camcontact (also pint's application registry).
 ureg = pint.UnitRegistry()
 pint.set_application_registry(ureg)
+#: a count of a million revolutions, the unit of bearing rating lives (ISO 281): dimensionless, so a life held as
+#: a plain count of revolutions converts to it (pint's ``revolution`` is an angle, 2 pi rad)
+ureg.define("million_revolutions = 1e6 = Mrev")
 Q_ = ureg.Quantity
 #: type of the Quantity fields of components
 Quantity = pint.Quantity
@@ -463,7 +466,24 @@ class SIView(Mapping):
 
 
 class Component:
-    """Mixin for attrs components: :attr:`si` is the cached SI view of the fields."""
+    """Mixin for attrs components: :attr:`si` is the cached SI view of the fields; in Jupyter a component shows
+    as a table of its fields (nested components by their type and name, expandable)."""
+
+    def _repr_html_(self) -> str:
+        import html
+
+        rows = []
+        for field in attrs.fields(type(self)):
+            value = getattr(self, field.name)
+            if isinstance(value, Component):
+                label = f"{type(value).__name__} {getattr(value, 'name', '')!r}"
+                cell = f"<details><summary>{html.escape(label)}</summary>{value._repr_html_()}</details>"
+            else:
+                cell = html.escape("—" if value is None else format_quantity(value))
+            rows.append(f"<tr><td style='text-align:left'>{html.escape(field.name)}</td>"
+                        f"<td style='text-align:left'>{cell}</td></tr>")
+        return (f"<table><caption style='text-align:left'><b>{html.escape(type(self).__name__)}</b></caption>"
+                + "".join(rows) + "</table>")
 
     @functools.cached_property
     def si(self) -> SIView:

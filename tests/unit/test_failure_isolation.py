@@ -43,7 +43,7 @@ def test_a_bearing_outside_the_iso281_range_keeps_every_roller():
         result = cc.Analysis(attrs.evolve(scene, outer_speed="0.01 rpm")).run()
     summary = result.summary_frame()
     assert summary.loc[0, "failed"] and "step 'modified_life' (iso281): InputError: a_ISO: kappa" in summary.loc[0, "error"]
-    assert np.isnan(summary.loc[0, "L_nm [-]"]) and summary.loc[0, "L10 [-]"] > 0
+    assert np.isnan(summary.loc[0, "L_nm [Mrev]"]) and summary.loc[0, "L10 [Mrev]"] > 0
     rollers = result.to_frame()
     assert rollers["failed"].all()  # the variant failed a step; its per-roller rows say so too
     assert (rollers["h_min_inner [µm]"].dropna() > 0).all() and len(rollers["h_min_inner [µm]"].dropna()) > 0

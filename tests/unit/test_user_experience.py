@@ -1,0 +1,141 @@
+"""Issue 21 (user experience): units as engineers write them, quantities with units, Jupyter displays, the list
+of outputs a scene can give (API and CLI), the top-level exports, LICENSE and py.typed."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import camcontact as cc
+from camcontact.cli import main
+from camcontact.errors import InputError
+from camcontact.report import unit_label
+from camcontact.scene_file import load_scene
+
+ROOT = Path(__file__).resolve().parents[2]
+STEEL = cc.Material(E="210 GPa", nu=0.3)
+
+
+def contact():
+    return cc.LineContact(body1=cc.Body(material=STEEL, radius="20 mm"), body2=cc.Body(material=STEEL, radius="10 mm"),
+                          load="1 kN", length="10 mm")
+
+
+@pytest.mark.parametrize("unit, label", [
+    ("N*m", "N·m"), ("W/(m*K)", "W/(m·K)"), ("J/(kg*K)", "J/(kg·K)"), ("mm^2/s", "mm²/s"), ("m**3", "m³"),
+    ("um", "µm"), ("degC", "°C"), ("", "-"), ("Mrev", "Mrev"), ("W s^0.5/(m^2 K)", "W·s⁰·⁵/(m²·K)"), ("1/GPa", "1/GPa"),
+])
+def test_unit_labels_keep_the_order_engineers_write(unit, label):
+    assert unit_label(unit) == label
+
+
+def test_unknown_unit_is_named():
+    with pytest.raises(InputError, match="unknown unit 'furlong_per_fortnite'"):
+        unit_label("furlong_per_fortnite")
+
+
+def test_quantity_returns_pint_values_in_the_report_unit_or_the_one_asked_for():
+    result = cc.Analysis(contact(), outputs=["p_h", "b"]).run()
+    p_h = result.quantity("p_h")
+    assert isinstance(p_h, cc.ureg.Quantity) and str(p_h.units) == "megapascal"
+    assert p_h.to("Pa").magnitude == pytest.approx(result["p_h"], rel=1e-12)
+    assert result.quantity("b", "um").magnitude == pytest.approx(1e6 * result["b"], rel=1e-12)
+    with pytest.raises(InputError, match="Result.quantity: p_h \\[Pa\\] in unit = 'kg'"):
+        result.quantity("p_h", "kg")
+    with pytest.raises(KeyError, match="h_min"):
+        result.quantity("h_min")
+
+
+def test_quantity_per_variant_and_text_outputs_as_they_are():
+    scene = load_scene(ROOT / "tutorials" / "pellet_mill_line_contact.toml")
+    result = cc.Analysis(scene.component, outputs=["h_c"], models={"film": ["moes", "grubin"]}).run()
+    films = result.quantity("h_c", "nm")
+    assert len(films) == 2 and all(f.units == cc.ureg.nanometer for f in films)
+    assert films[0].magnitude == pytest.approx(1e9 * result["h_c"][0], rel=1e-12)
+    cam = cc.Analysis(load_scene(None).component, outputs=["jump"]).run()
+    assert isinstance(cam.quantity("jump"), str)
+
+
+def test_the_bearing_lives_are_shown_in_millions_of_revolutions():
+    scene = load_scene(ROOT / "tutorials" / "pellet_mill_bearing.toml").component
+    result = cc.Analysis(scene, outputs=["L10", "L10h"]).run()
+    frame = result.summary_frame()  # per roller: to_frame(); the bearing's scalars: summary_frame()
+    assert frame.loc[0, "L10 [Mrev]"] == pytest.approx(result["L10"] / 1e6, rel=1e-12)
+    assert result.quantity("L10").to("").magnitude == pytest.approx(result["L10"], rel=1e-12)
+
+
+def test_results_components_and_analyses_show_their_values():
+    result = cc.Analysis(contact(), outputs=["p_h", "b"]).run()
+    text = repr(result)
+    assert text.startswith("<Result of a line_contact scene") and "p_h [MPa]" in text and "742.2" in text
+    html = result._repr_html_()
+    assert "<table" in html and "p_h [MPa]" in html and "<summary>steps</summary>" in html and "hertz" in html
+    cam = load_scene(None).analysis().run()
+    html = cam._repr_html_()
+    assert "h_min_cycle [µm]" in html and "per cam_angle (360 rows" in html
+    assert "per cam_angle: to_frame()" in repr(cam)
+    component = contact()._repr_html_()
+    assert "<b>LineContact</b>" in component and "1 kN" in component and "<details><summary>Body" in component
+    assert repr(cc.Analysis(contact())).startswith("<Analysis of a line_contact scene: steps ")
+
+
+def test_available_outputs_lists_what_a_scene_can_give_and_what_the_rest_needs():
+    analysis = load_scene(None).analysis()
+    table = analysis.available_outputs()
+    assert list(table.columns) == ["output", "unit", "description", "step", "default", "per_index", "available",
+                                   "missing"]
+    by = table.set_index("output")
+    # every output of the default report is listed as a default, available output
+    planned = set(analysis.run().outputs) - {"cam_angle"}
+    assert planned <= set(by.index[by["default"] & by["available"]])
+    assert by.loc["h_min", "per_index"] and not by.loc["h_min_cycle", "per_index"] and by.loc["h_min", "unit"] == "µm"
+    wear = by.loc["wear_rate"]
+    assert not wear["available"] and "Material.hardness" in wear["missing"]
+    with pytest.raises(InputError, match="variant 'grubin'"):
+        analysis.available_outputs("grubin")
+
+
+def test_cli_outputs_prints_the_list(capsys):
+    assert main(["outputs"]) == 0
+    out = capsys.readouterr().out
+    assert "LS-1" in out and "h_min_cycle" in out and "need more input (3):" in out and "wear_rate" in out
+    assert main(["outputs", str(ROOT / "tutorials" / "forti_ball_cone_cvt.toml")]) == 0
+    assert "traction_margin_in" in capsys.readouterr().out
+    assert main(["outputs", "no_such_scene.toml"]) == 2
+
+
+def test_user_facing_classes_are_exported_and_the_import_stays_cheap():
+    for name in ("MotionProgram", "Segment", "load_scene", "sweep_frame", "cvt_map", "stribeck_sweep"):
+        assert name in cc.__all__ and hasattr(cc, name) and name in dir(cc)
+    with pytest.raises(AttributeError, match="no attribute 'Nope'"):
+        cc.Nope  # noqa: B018
+    code = "import sys, camcontact; print('numba' in sys.modules, 'camcontact.kinematics.motion_program' in sys.modules)"
+    assert subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.split() == [
+        "False", "False"]
+
+
+def test_license_and_typing_marker_ship():
+    assert "MIT License" in (ROOT / "LICENSE").read_text()
+    assert (ROOT / "camcontact" / "py.typed").exists()
+    assert '"camcontact" = ["py.typed"]' in (ROOT / "pyproject.toml").read_text()
+
+
+def test_cli_quiet_and_verbose(tmp_path, capsys):
+    import logging
+
+    from camcontact.cli import _configure_logging
+
+    csv = tmp_path / "quiet.csv"
+    assert main(["run", "-q", "--csv", str(csv)]) == 0
+    captured = capsys.readouterr()
+    assert captured.out == "" and csv.stat().st_size > 0
+    try:
+        assert main(["-v", "run", "--csv", str(tmp_path / "loud.csv")]) == 0
+        err = capsys.readouterr().err
+        assert "camcontact: step kinematics (roller follower" in err and "camcontact: step normal_force ran in" in err
+    finally:  # the CLI's handler points at this test's captured stderr: remove it
+        _configure_logging(0)
+        logging.getLogger("camcontact").setLevel(logging.NOTSET)
+    assert main(["run", "-v", "-q"]) == 2
+    assert "-v and -q: choose one" in capsys.readouterr().err
