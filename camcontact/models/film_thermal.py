@@ -17,13 +17,13 @@ Other published factors (:data:`THERMAL_FACTORS`, :func:`thermal_reduction`), wi
 =============== =============================================================== ==========================
 name            phi_T                                                           source
 =============== =============================================================== ==========================
-murch_wilson    1 / (1 + 0.254 L_m^0.62) (pure rolling)                          Murch & Wilson (1975), as
+murch_wilson    1 / (1 + 0.254 L_m^0.62) (pure rolling)                         Murch & Wilson (1975), as
                                                                                 printed by Wilson & Sheu
                                                                                 (1983) Eq. 9
-wilson_sheu     1 / (1 + 0.241 (1 + 14.8 Z^0.83) L_m^0.64),                      Wilson & Sheu (1983)
-                Z = |u1 - u2| / (u1 + u2)                                       Eqs. 5-7
+wilson_sheu     1 / (1 + 0.241 (1 + 14.8 Z^0.83) L_m^0.64),                     Wilson & Sheu (1983)
+                Z = abs(u1 - u2) / (u1 + u2)                                    Eqs. 5-7
 zhu_cheng       [1 - 13.2 (p_h/E') L_m^0.42] / [1 + 0.213 (1 + 2.23 S^0.83)     Zhou & Hoeprich (1991)
-                L_m^0.64], S = |u1 - u2| / u_m                                   Eq. 21 (Zhu & Cheng 1988;
+                L_m^0.64], S = abs(u1 - u2) / u_m                               Eq. 21 (Zhu & Cheng 1988;
                                                                                 the "Gupta et al." factor)
 delabenetta     the form above with (0.1, 14.8, 0.83, 0.64), L on (u1 + u2)     Delabenetta (2021) Eq. 44
 =============== =============================================================== ==========================

@@ -3,10 +3,10 @@
 =========== ================================================ ===========================================
 name        what                                             requires
 =========== ================================================ ===========================================
-constant    Ct given (Saccheto's baseline Ct = mu_min, or a   normal_force
+constant    Ct given (Saccheto's baseline Ct = mu_min, or a  normal_force
             fluid of Tabelas 4.2/4.3); limit Ct N
-fastsim     Kalker's FASTSIM creep forces, spin moment and    normal_force, a_rolling, b_lateral,
-            slip fraction for a Coulomb bound Ct p            traction_coefficient, shear_modulus,
+fastsim     Kalker's FASTSIM creep forces, spin moment and   normal_force, a_rolling, b_lateral,
+            slip fraction for a Coulomb bound Ct p           traction_coefficient, shear_modulus,
                                                              creepage_x, creepage_y, spin_creepage
 =========== ================================================ ===========================================
 

@@ -3,9 +3,9 @@
 =========== ============================================== ==============================================
 name        shear law of the film                          requires
 =========== ============================================== ==============================================
-newtonian   tau = eta(p) u_s/h, bounded by tau_L            normal_force, p_h, b, h_c, u_s, u_m,
+newtonian   tau = eta(p) u_s/h, bounded by tau_L           normal_force, p_h, b, h_c, u_s, u_m,
             (Bair & Winer 1979)                            lubricant_state (optional: effusivity)
-eyring      tau = tau0 asinh(eta(p) u_s/(h tau0))           as newtonian
+eyring      tau = tau0 asinh(eta(p) u_s/(h tau0))          as newtonian
             (Johnson & Tevaarwerk 1977), bounded by tau_L
 =========== ============================================== ==============================================
 

@@ -10,8 +10,8 @@ ehl_traction  creepage that transmits a force with spin,     normal_force, a_rol
 
 The physics is :mod:`camcontact.contact.spin_traction`; the film's shear law comes from a fluid
 traction model of :mod:`camcontact.models.traction_fluid` (``fluid``; default: Eyring with the limiting
-shear stress, parameters from the lubricant where a scene gives them). Beside :class:`~camcontact.models.
-traction.Fastsim` (Kalker's dry creep theory with a Coulomb bound, Saccheto's method) in one model slot.
+shear stress, parameters from the lubricant where a scene gives them). Beside
+:class:`~camcontact.models.traction.Fastsim` (Kalker's dry creep theory with a Coulomb bound, Saccheto's method) in one model slot.
 """
 
 from __future__ import annotations

@@ -65,8 +65,10 @@ PER_ANGLE = frozenset((
     "fluid_traction_coefficient", "traction_regime", "traction_temperature_rise", "traction_valid",
 ))
 DEFAULT_OUTPUTS = (
-    "cam_angle", "lift", "follower_velocity", "follower_acceleration", "pressure_angle", "cam_radius", "R", "u_m",
-    "contact_force", "cam_torque", "w", "b", "p_h", "M", "L", "h_c", "h_min", "film_regime", "friction_force",
+    "cam_angle", "lift", "follower_velocity", "follower_acceleration", "follower_jerk", "pressure_angle", "cam_radius",
+    "R", "u_m", "profile_x", "profile_y", "contact_force", "inertia_force", "spring_force", "damping_force",
+    "preload_force", "cam_torque", "w", "b", "p_h", "M", "L", "h_c", "h_min", "Lambda_min", "film_regime",
+    "friction_force",
     "friction_coefficient", "friction_power", "friction_torque", "cam_torque_with_friction", "wear_rate",
     "motion_continuity", "natural_frequency", "k_min", "jump_margin", "jump", "contact_force_max", "p_h_max", "h_min_cycle", "viscosity_extrapolated",
     "friction_power_mean", "friction_energy_per_cycle", "friction_torque_mean", "wear_rate_mean",

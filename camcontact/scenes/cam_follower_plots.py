@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError
+from .plot_layout import panel_axes
 
 __all__ = ["plot_cam_follower"]
 
@@ -62,27 +63,26 @@ def _friction_panel(ax, result, degrees) -> None:
     ax.axhline(0.0, color="0.7", lw=0.8)
     ax.set(xlabel="cam angle [deg]", ylabel="friction force [N]", title="friction over the turn")
     if torque_ax is not None:
-        torque_ax.set_ylabel("friction torque [N m] (dashed)")
+        torque_ax.set_ylabel("camshaft friction torque [N·m] (dashed)")
     ax.legend(lines, [line.get_label() for line in lines], fontsize=8)
 
 
-def plot_cam_follower(result, *, panels=None, figsize=None):
-    """Figure with the panels the result has outputs for (or ``panels``, names of :data:`PANELS`).
+def plot_cam_follower(result, *, panels=None, figsize=None, ax=None, fig=None, columns=3):
+    """Figure with the panels the result has outputs for (or ``panels``, names of :data:`PANELS`), in a grid of
+    ``columns`` per row, or on the caller's axes (``ax=``, one per panel) or figure (``fig=``).
 
-    One line per variant (film model) in the film panel.
+    One line per variant (film model) in the film, Lambda and friction panels.
     """
-    import matplotlib.pyplot as plt
-
     outputs = set(result.outputs)
     chosen = [p for p in (panels or PANELS) if set(PANELS.get(p, ("?",))) <= outputs]
     if panels is not None and (unknown := sorted(set(panels) - set(PANELS))):
         raise InputError(f"unknown cam_follower plot panels {unknown}; choose from {sorted(PANELS)}")
     if not chosen:
         raise InputError(f"nothing to plot: ask for the outputs of at least one panel {PANELS}")
-    fig, axes = plt.subplots(1, len(chosen), figsize=figsize or (4.2 * len(chosen), 3.8), squeeze=False)
+    fig, axes = panel_axes(len(chosen), ax=ax, fig=fig, figsize=figsize, columns=columns, where="cam_follower plot")
     row = result.rows[0]
     degrees = np.degrees(row["cam_angle"])
-    for ax, panel in zip(axes[0], chosen):
+    for ax, panel in zip(axes, chosen):
         if panel == "svaj":
             for key, scale, label in (("lift", 1e3, "s [mm]"), ("follower_velocity", 1.0, "v [m/s]"),
                                       ("follower_acceleration", 1e-2, "a [100 m/s²]"),
@@ -123,5 +123,4 @@ def plot_cam_follower(result, *, panels=None, figsize=None):
                                 label=f"{key} {label}".strip())
             ax.set(xlabel="cam angle [deg]", ylabel="film [µm]", title="film over the cycle")
             ax.legend(fontsize=8)
-    fig.tight_layout()
     return fig

@@ -10,23 +10,23 @@ holds each such choice as a switch, so that
 * any single switch can be flipped (``attrs.evolve(THESIS, roughness_factor=1.0)``) to see what
   one choice does to the conclusion.
 
-=============================  ==========================  ==========================  =========
-switch                         thesis                      corrected                   erratum
-=============================  ==========================  ==========================  =========
-convex_raceway                 True (curvatures summed)    False (outer race concave)  2
-derive_rolling_speed           False (catalogue speed)     True (pure rolling)         27
-temperature_loop               True (84.9 °C from 85 °C)   False                       28, §5.2
-celsius_offset                 273.0                       273.15                      28
-lubricant_data                 "thesis" (mineral C_alpha)  "lubricant" (its own laws)  §5.2
-grubin_exponent_digits         3 (0.727, 0.091)            None (8/11, 1/11)           12
-starvation_factor              1.0                         None (grease 0.7, oil 1.0)  13
-roughness_factor               2.0 ("gamma = 2")           1.0                         13
-roughness_amplitude            "thesis" (sigma/sqrt 2)     "sinusoid" (sqrt 2 sigma)   Eq. 30
-roelands_log10_constant        4.2 (the code's log10 form) None (ln form, 9.67)        §2.10
-stress                         "thesis_constants"          "field"                     4
-yield_rule                     "thesis" (tau vs sigma_y)   "tresca" (tau vs sigma_y/2) 5
-absolute_lubricant_temperature False (a rise as "T_maxL")  True (T_smax + rise)        15
-=============================  ==========================  ==========================  =========
+==============================  ===========================  ===========================  ========
+switch                          thesis                       corrected                    erratum
+==============================  ===========================  ===========================  ========
+convex_raceway                  True (curvatures summed)     False (outer race concave)   2
+derive_rolling_speed            False (catalogue speed)      True (pure rolling)          27
+temperature_loop                True (84.9 °C from 85 °C)    False                        28, §5.2
+celsius_offset                  273.0                        273.15                       28
+lubricant_data                  "thesis" (mineral C_alpha)   "lubricant" (its own laws)   §5.2
+grubin_exponent_digits          3 (0.727, 0.091)             None (8/11, 1/11)            12
+starvation_factor               1.0                          None (grease 0.7, oil 1.0)   13
+roughness_factor                2.0 ("gamma = 2")            1.0                          13
+roughness_amplitude             "thesis" (sigma/sqrt 2)      "sinusoid" (sqrt 2 sigma)    Eq. 30
+roelands_log10_constant         4.2 (the code's log10 form)  None (ln form, 9.67)         §2.10
+stress                          "thesis_constants"           "field"                      4
+yield_rule                      "thesis" (tau vs sigma_y)    "tresca" (tau vs sigma_y/2)  5
+absolute_lubricant_temperature  False (a rise as "T_maxL")   True (T_smax + rise)         15
+==============================  ===========================  ===========================  ========
 """
 
 from __future__ import annotations

@@ -204,9 +204,10 @@ def roller_fluid_friction(traction_model, Q, u_m, slide_roll_ratio, p_h_inner, p
                           h_c_inner, h_c_outer, lubricant_state, E_reduced, effusivity, contact_radii,
                           roller_length, **inputs):
     """Fluid traction of the film at both raceway contacts of every loaded roller at the slide/roll ratio
-    (a ``traction_models`` model over the Hertz pressure with the central film, :mod:`camcontact.models.
-    traction_fluid`: it falls to zero with the slip, as EHL traction does), the flash temperature [K] of each
-    contact (Delabenetta 2021 Eq. 48) and the bearing's sliding friction power sum(mu Q |u1 - u2|) [W]; NaN
+    (a ``traction_models`` model over the Hertz pressure with the central film,
+    :mod:`camcontact.models.traction_fluid`: it falls to zero with the slip, as EHL traction does), the flash
+    temperature [K] of each contact (Delabenetta 2021 Eq. 48) and the bearing's sliding friction power
+    sum(mu Q |u1 - u2|) [W]; NaN
     for unloaded rollers; ``friction_valid_*`` whether the contact is loaded with a physical coefficient.
 
     With the ``mixed`` step's ``asperity_load_fraction_<race>`` and ``h_c_mixed_<race>`` in ``inputs`` (and the

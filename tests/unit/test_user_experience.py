@@ -139,3 +139,32 @@ def test_cli_quiet_and_verbose(tmp_path, capsys):
         logging.getLogger("camcontact").setLevel(logging.NOTSET)
     assert main(["run", "-v", "-q"]) == 2
     assert "-v and -q: choose one" in capsys.readouterr().err
+
+
+def test_cam_plot_is_a_grid_of_every_panel_and_draws_on_the_callers_axes(tmp_path):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    result = cc.load_scene().analysis().run()
+    figure = result.plot()
+    titles = [ax.get_title() for ax in figure.axes]
+    # the default report has what the README promises: SVAJ with jerk, the profile, the force breakdown, Lambda
+    for title in ("SVAJ diagram", "cam profile (contact points)", "contact force", "film parameter"):
+        assert title in titles
+    width, height = figure.get_size_inches()
+    assert width / height < 2.0  # a grid, not one strip
+    svaj = figure.axes[titles.index("SVAJ diagram")]
+    assert any("j [" in text.get_text() for text in svaj.get_legend().get_texts())
+    figure.savefig(tmp_path / "cam.png")
+    fig, axes = plt.subplots(1, 2)
+    assert result.plot(panels=("lambda", "pressure"), ax=axes) is fig and axes[0].get_title() == "film parameter"
+    own = plt.figure()
+    assert result.plot(panels=("film",), fig=own) is own and len(own.axes) == 1
+    with pytest.raises(InputError, match="ax= gives 2 axes for 1 panels"):
+        result.plot(panels=("film",), ax=axes)
+    with pytest.raises(InputError, match="give ax= or fig=, not both"):
+        result.plot(panels=("film",), ax=axes[0], fig=own)
+    plt.close("all")

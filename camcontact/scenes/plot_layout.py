@@ -1,0 +1,41 @@
+"""The axes a scene plot draws its panels on: a grid of at most ``columns`` panels per row in a new figure, the
+axes the caller passes (``ax=`` one Axes or a sequence, one per panel), or new axes in the caller's figure
+(``fig=``). Every scene plotter takes these, so its panels can go into a report's own layout."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import Any
+
+from ..errors import InputError
+
+__all__ = ["panel_axes"]
+
+#: width and height of one panel [in]
+PANEL_SIZE = (4.6, 3.6)
+
+
+def panel_axes(count: int, *, ax: Any = None, fig: Any = None, figsize: tuple[float, float] | None = None,
+               columns: int = 3, where: str = "plot") -> tuple[Any, list[Any]]:
+    """(figure, axes) for ``count`` panels; ``ax`` (an Axes, or one per panel) or ``fig`` (a Figure to add a grid
+    to) are the caller's; otherwise a new figure of ceil(count/columns) rows (``figsize``: its size [in])."""
+    import matplotlib.pyplot as plt
+
+    if ax is not None and fig is not None:
+        raise InputError(f"{where}: give ax= or fig=, not both")
+    if ax is not None:
+        axes = list(ax.flat) if hasattr(ax, "flat") else list(ax) if isinstance(ax, Sequence) else [ax]
+        if len(axes) != count:
+            raise InputError(f"{where}: ax= gives {len(axes)} axes for {count} panels; allowed: one Axes per panel")
+        return axes[0].figure, axes
+    cols = max(1, min(columns, count))
+    rows = math.ceil(count / cols)
+    if fig is None:
+        fig = plt.figure(figsize=figsize or (PANEL_SIZE[0] * cols, PANEL_SIZE[1] * rows), layout="constrained")
+        fig.get_layout_engine().set(wspace=0.08, hspace=0.06)  # room between a twin axis' label and the next panel
+    grid = fig.subplots(rows, cols, squeeze=False)
+    axes = list(grid.flat)
+    for spare in axes[count:]:
+        spare.remove()
+    return fig, axes[:count]
