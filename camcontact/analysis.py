@@ -158,6 +158,35 @@ class Analysis:
         False (default): a step that fails leaves NaN in its own outputs with the reason
         (:attr:`Result.failures`, the report's ``failed`` and ``error`` columns) and the others run;
         True: the first failure raises.
+
+    Examples
+    --------
+    A line contact, two film models side by side; the report in units, one value with its unit, what ran:
+
+    >>> import camcontact as cc
+    >>> steel = cc.Material(E="210 GPa", nu=0.3)
+    >>> oil = cc.Lubricant(nu40="100 cSt", nu100="11 cSt", density="870 kg/m^3", alpha="22 1/GPa")
+    >>> contact = cc.LineContact(body1=cc.Body(material=steel, radius="40 mm", speed="3 m/s", roughness="0.2 um"),
+    ...                          body2=cc.Body(material=steel, radius="10 mm", speed="3 m/s", roughness="0.2 um"),
+    ...                          load="3 kN", length="15 mm", lubricant=oil, temperature="80 degC")
+    >>> analysis = cc.Analysis(contact, outputs=["p_h", "h_min", "Lambda_min"],
+    ...                        models={"film": ["pan_hamrock", "dowson_higginson"]})
+    >>> analysis.steps()
+    ['geometry', 'hertz', 'kinematics', 'lubricant', 'ehl_groups', 'film', 'film_thickness', 'lambda']
+    >>> result = analysis.run()
+    >>> result.to_frame(units={"h_min": "nm"}).round(1).values.tolist()
+    [['pan_hamrock', 958.2, 262.0, 0.9], ['dowson_higginson', 958.2, 280.8, 1.0]]
+    >>> print(f"{result.quantity('p_h')[0]:.4g~P}")
+    958.2 MPa
+
+    The outputs a scene can give (``camcontact outputs`` for a scene file), and a study over a grid of
+    field paths (one row per case; :func:`camcontact.sweep_frame` does the same from a component):
+
+    >>> "Lambda_min" in set(cc.Analysis(contact).available_outputs()["output"])
+    True
+    >>> table = cc.Analysis(contact, outputs=["p_h"]).sweep({"load": ["1 kN", "3 kN"]}, progress=False)
+    >>> table[["load [kN]", "p_h [MPa]"]].round(1).values.tolist()
+    [[1.0, 553.2], [3.0, 958.2]]
     """
 
     def __init__(

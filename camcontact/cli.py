@@ -194,8 +194,11 @@ def _run(args: argparse.Namespace) -> int:
     if args.plot is not None:
         _check_plot(Path(args.plot))
 
+    swept = ([f"[sweep] table of {math.prod(len(v) for v in scene.sweep.values())} cases over "
+              f"{', '.join(scene.sweep)}: this runs the base case; camcontact sweep {args.scene} runs them all"]
+             if scene.sweep else [])
     stdout_closed = not args.quiet and not _print_before_run(
-        f"camcontact {__version__} — scene: {_printable(scene.name)}",
+        f"camcontact {__version__} — scene: {_printable(scene.name)}", *map(_printable, swept),
         f"steps: {', '.join(analysis.steps())}" + (f"; {len(analysis.variants)} variants" if len(analysis.variants) > 1 else ""))
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", StepFailureWarning)

@@ -123,6 +123,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("normal_force", "N", "N", "normal contact force (0 while the contact is open)"),
         _q("contact_open", None, None, "True where the follower has left the cam"),
         _q("film_regime", None, None, "'ok', or why the film at this angle is special (u_m = 0, jump, validity)"),
+        _q("film_valid", None, None, "True where the film model is inside its validity and converged (the reason "
+                                     "text says why not)"),
         _q("H0", "", "", "rigid-body approach H0 of the numerical solution (Hertz units, x0 = b)"),
         _q("H_min", "", "", "minimum film H_min = h_min R / b^2 of the numerical solution"),
         _q("H_c", "", "", "central film H_c = h_c R / b^2 of the numerical solution"),
@@ -293,6 +295,7 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("cam_axial_force", "N", "N", "axial force of the loading cam"),
         _q("mu_min", "", "", "traction the input contact needs, F_t/F_n (Saccheto Eq. 6.19)"),
         _q("traction_check", None, None, "needed traction against the fluid's traction coefficient"),
+        _q("traction_sufficient", None, None, "True where both contacts need F_t/F_n below the traction coefficient"),
         _q("a_rolling", "m", "um", "Hertz semi-axis along the rolling direction"),
         _q("a_transverse", "m", "um", "Hertz semi-axis across the rolling direction"),
         _q("Rx", "m", "mm", "reduced radius along the rolling direction"),

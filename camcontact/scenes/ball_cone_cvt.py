@@ -89,7 +89,7 @@ DEFAULT_OUTPUTS = (
     "rolling_speed_in", "rolling_speed_out", "psi_in", "psi_out", "psi_total", "spin_in", "spin_out",
     "spin_roll_in", "spin_roll_out",
     "torque", "output_torque", "cam_axial_force", "normal_force", "tangential_force_in", "tangential_force_out",
-    "traction_needed_in", "traction_needed_out", "mu_min", "traction_check",
+    "traction_needed_in", "traction_needed_out", "mu_min", "traction_check", "traction_sufficient",
     "Rx", "Ry", "a_rolling", "a_transverse", "p_h", "approach", "pressure_check", "stress_limit_exceeded",
     "h_c_in", "h_min_in", "h_c_out", "h_min_out", "Lambda_in", "Lambda_out", "viscosity_extrapolated",
     "creepage_in", "creepage_out", "traction_regime_in", "traction_regime_out", "gross_slip_in", "gross_slip_out",

@@ -7,6 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError
+from .plot_layout import panel_axes
 
 __all__ = ["plot_ball_cone_cvt"]
 
@@ -51,7 +52,7 @@ def _arrow_key(ax, arrows, magnitudes):
     top = float(np.nanmax(magnitudes)) if np.size(magnitudes) else 0.0
     if top > 0.0:
         key = float(f"{0.5 * top / 1e6:.1g}")
-        ax.quiverkey(arrows, 0.85, -0.24, key * 1e6, f"{key:g} MPa", labelpos="E", coordinates="axes",
+        ax.quiverkey(arrows, 0.8, 0.04, key * 1e6, f"{key:g} MPa", labelpos="E", coordinates="axes",
                      fontproperties={"size": 7})
 
 
@@ -110,15 +111,17 @@ def _losses(ax, result):
                else f"{label}: gross slip, no efficiency")
     ax.set_xticks(np.arange(len(names)) + 0.4 - width / 2, [n.replace("_loss_", " ") for n in names])
     ax.set(ylabel="power loss per contact [W]", title="contact losses (creep, spin)")
-    ax.legend(fontsize=8)
+    ax.set_ylim(top=1.3 * ax.get_ylim()[1])  # room for the legend above the bars
+    ax.legend(fontsize=8, loc="upper center")
 
 
-def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsize=(18.0, 5.2)):
+def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsize=None, ax=None, fig=None, columns=2):
     """Panels ``"in"``/``"out"``: the traction map of the first variant's input and output contact (FASTSIM:
     stick/slip elements and traction arrows; EHL traction: the film's shear stress, evaluated again for the
     map); ``"losses"``: creep and spin loss per contact and the drive's
-    efficiency, per variant; ``"life"``: L10 [h] per track and of the system, per variant (log scale)."""
-    import matplotlib.pyplot as plt
+    efficiency, per variant; ``"life"``: L10 [h] per track and of the system, per variant (log scale). In a grid
+    of ``columns`` per row, or on the caller's axes (``ax=``, one per panel) or figure (``fig=``)."""
+    from matplotlib.ticker import LogFormatter
 
     contact_needs = ("a_rolling", "a_transverse", "normal_force")
     need = {side: contact_needs + tuple(f"{q}_{side}" for q in ("creepage", "spin", "traction_regime",
@@ -127,8 +130,8 @@ def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsiz
     chosen = [p for p in panels if all(k in result.outputs for k in need[p])]
     if not chosen:
         raise InputError(f"nothing to plot: the panels {list(panels)} need the outputs {need}")
-    fig, axes = plt.subplots(1, len(chosen), figsize=figsize, squeeze=False)
-    for ax, panel in zip(axes[0], chosen):
+    fig, axes = panel_axes(len(chosen), ax=ax, fig=fig, figsize=figsize, columns=columns, where="ball_cone_cvt plot")
+    for ax, panel in zip(axes, chosen):
         if panel in ("in", "out"):  # the first variant's contact, by its traction model
             row = result.rows[0]
             if row.get(f"slip_fraction_{panel}") is not None:
@@ -145,8 +148,9 @@ def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsiz
                        label=label)
             ax.set_xticks(np.arange(len(TRACKS)) + 0.4 - width / 2, [t.replace("life_", "") for t in TRACKS])
             ax.set_yscale("log")
+            ax.yaxis.set_major_formatter(LogFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
+            ax.yaxis.set_minor_formatter(LogFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
             ax.set(ylabel="L10 [h]", title="Lundberg-Palmgren life per track")
             if len(labels) > 1:
                 ax.legend(fontsize=8)
-    fig.tight_layout()
     return fig

@@ -58,7 +58,7 @@ DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard
                   "traction": None}
 PER_ANGLE = frozenset((
     "cam_angle", *FOLLOWER_KINEMATICS, *FORCES_1DOF, "normal_force", "w", "b", "p_h", "approach", "U", "G", "W", "M",
-    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_regime", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
+    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_regime", "film_valid", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
     "friction_coefficient", "friction_power", "wear_rate", "contact_open", "tangential_force", "friction_torque",
     "cam_torque_with_friction", "friction_arm", *(q for q in ROLLER_OUTPUTS if q != "roller_cycle"),
     "asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity", "mixed_valid",
@@ -67,7 +67,7 @@ PER_ANGLE = frozenset((
 DEFAULT_OUTPUTS = (
     "cam_angle", "lift", "follower_velocity", "follower_acceleration", "follower_jerk", "pressure_angle", "cam_radius",
     "R", "u_m", "profile_x", "profile_y", "contact_force", "inertia_force", "spring_force", "damping_force",
-    "preload_force", "cam_torque", "w", "b", "p_h", "M", "L", "h_c", "h_min", "Lambda_min", "film_regime",
+    "preload_force", "cam_torque", "w", "b", "p_h", "M", "L", "h_c", "h_min", "Lambda_min", "film_regime", "film_valid",
     "friction_force",
     "friction_coefficient", "friction_power", "friction_torque", "cam_torque_with_friction", "wear_rate",
     "motion_continuity", "natural_frequency", "k_min", "jump_margin", "jump", "contact_force_max", "p_h_max", "h_min_cycle", "viscosity_extrapolated",
@@ -125,9 +125,9 @@ def cycle_film_steps(film_model: Any, effects: frozenset) -> list[Step]:
     films = films_of(film_model)
     film = transient_films if "squeeze" in effects else quasi_steady_films
     if "thermal" not in effects:
-        return [Step.of(film, provides=(*films, "film_regime", "film_solutions"))]
+        return [Step.of(film, provides=(*films, "film_regime", "film_valid", "film_solutions"))]
     isothermal = {name: f"{name}_isothermal" for name in films}
-    return [Step.of(film, provides=(*films, "film_regime", "film_solutions"), rename=isothermal),
+    return [Step.of(film, provides=(*films, "film_regime", "film_valid", "film_solutions"), rename=isothermal),
             Step.of(cycle_inlet_thermal), Step.of(thermal_films, extra=tuple(isothermal.values()), provides=films)]
 
 

@@ -52,7 +52,7 @@ DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
 DEFAULT_FILM = "pan_hamrock"
 DEFAULT_OUTPUTS = (
     "E_reduced", "R", "w", "u_m", "b", "p_h", "approach", "tau_max", "z_tau_max", "tau_xz_range",
-    "eta0", "alpha", "viscosity_extrapolated", "M", "L", "h_c", "h_min", "Lambda_c", "Lambda_min", "regime", "film_validity",
+    "eta0", "alpha", "viscosity_extrapolated", "M", "L", "h_c", "h_min", "Lambda_c", "Lambda_min", "regime", "film_validity", "film_valid",
 )
 MIXED_OUTPUTS = ("asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "mixed_valid")
 FRICTION_OUTPUTS = ("traction_coefficient", "friction_per_length", "friction_power_per_length",
@@ -93,7 +93,7 @@ def film_steps(film_model: Any, thermal: bool) -> list[Step]:
     reads = model_reads(film_model)
     steps = [
         Step.of(ehl_groups),
-        Step.of(line_film, provides=(*isothermal, "film_validity", "film_solution"), extra=reads.required,
+        Step.of(line_film, provides=(*isothermal, "film_validity", "film_valid", "film_solution"), extra=reads.required,
                 optional=reads.optional),
         Step.of(thermal_films if thermal else isothermal_films, extra=isothermal, provides=films),
         *(Step.of(film_parameter, name="lambda" if q == basis else f"lambda_{q[2:]}",

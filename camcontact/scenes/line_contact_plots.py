@@ -5,21 +5,21 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError
+from .plot_layout import panel_axes
 
 __all__ = ["plot_line_contact"]
 
 
-def plot_line_contact(result, *, figsize=(11.0, 3.6)):
-    """Three panels: Hertz pressure, stresses along the depth at x = 0, films per model."""
-    import matplotlib.pyplot as plt
-
+def plot_line_contact(result, *, figsize=None, ax=None, fig=None, columns=3):
+    """Three panels: Hertz pressure, stresses along the depth at x = 0, films per model; on the caller's axes
+    (``ax=``, one per panel) or figure (``fig=``) when given."""
     row0 = result.rows[0]
     panels = [p for p, need in (("pressure", ("b", "p_h")), ("stress", ("b", "p_h")), ("film", ("h_c",)))
               if all(k in result.outputs for k in need) or (p == "film" and "h_min" in result.outputs)]
     if not panels:
         raise InputError("nothing to plot: ask for b and p_h, or for film outputs")
-    fig, axes = plt.subplots(1, len(panels), figsize=figsize, squeeze=False)
-    for ax, panel in zip(axes[0], panels):
+    fig, axes = panel_axes(len(panels), ax=ax, fig=fig, figsize=figsize, columns=columns, where="line_contact plot")
+    for ax, panel in zip(axes, panels):
         if panel == "pressure":
             x = np.linspace(-1.5, 1.5, 301)
             ax.plot(x, row0["p_h"] * 1e-6 * np.sqrt(np.clip(1 - x**2, 0, None)))
@@ -46,6 +46,6 @@ def plot_line_contact(result, *, figsize=(11.0, 3.6)):
                     ax.bar(positions + offset, values, width=0.4, label=key)
             ax.set_xticks(positions, labels, rotation=30, ha="right", fontsize=8)
             ax.set(ylabel="film [µm]", title="film thickness")
-            ax.legend(fontsize=8)
-    fig.tight_layout()
+            ax.set_ylim(top=1.25 * ax.get_ylim()[1])  # room for the legend above the bars
+            ax.legend(fontsize=8, loc="upper center", ncols=2)
     return fig

@@ -17,25 +17,30 @@ PANEL_SIZE = (4.6, 3.6)
 
 
 def panel_axes(count: int, *, ax: Any = None, fig: Any = None, figsize: tuple[float, float] | None = None,
-               columns: int = 3, where: str = "plot") -> tuple[Any, list[Any]]:
+               columns: int = 3, where: str = "plot",
+               projections: Sequence[str | None] | None = None) -> tuple[Any, list[Any]]:
     """(figure, axes) for ``count`` panels; ``ax`` (an Axes, or one per panel) or ``fig`` (a Figure to add a grid
-    to) are the caller's; otherwise a new figure of ceil(count/columns) rows (``figsize``: its size [in])."""
+    to) are the caller's; otherwise a new figure of ceil(count/columns) rows (``figsize``: its size [in]).
+    ``projections``: per panel None or a projection name (``"polar"``); a caller's Axes must have it."""
     import matplotlib.pyplot as plt
 
+    projections = list(projections) if projections is not None else [None] * count
     if ax is not None and fig is not None:
         raise InputError(f"{where}: give ax= or fig=, not both")
     if ax is not None:
         axes = list(ax.flat) if hasattr(ax, "flat") else list(ax) if isinstance(ax, Sequence) else [ax]
         if len(axes) != count:
             raise InputError(f"{where}: ax= gives {len(axes)} axes for {count} panels; allowed: one Axes per panel")
+        for axis, projection in zip(axes, projections):
+            if projection is not None and axis.name != projection:
+                raise InputError(f"{where}: a panel needs a {projection} Axes, got a {axis.name} one "
+                                 f"(plt.subplot(projection={projection!r}))")
         return axes[0].figure, axes
     cols = max(1, min(columns, count))
     rows = math.ceil(count / cols)
     if fig is None:
         fig = plt.figure(figsize=figsize or (PANEL_SIZE[0] * cols, PANEL_SIZE[1] * rows), layout="constrained")
         fig.get_layout_engine().set(wspace=0.08, hspace=0.06)  # room between a twin axis' label and the next panel
-    grid = fig.subplots(rows, cols, squeeze=False)
-    axes = list(grid.flat)
-    for spare in axes[count:]:
-        spare.remove()
-    return fig, axes[:count]
+    grid = fig.add_gridspec(rows, cols)
+    return fig, [fig.add_subplot(grid[k // cols, k % cols], projection=projection)
+                 for k, projection in enumerate(projections)]

@@ -5,28 +5,30 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError
+from .plot_layout import panel_axes
 
 __all__ = ["plot_raceway_contact"]
 
 CELSIUS = 273.15
 
 
-def plot_raceway_contact(result, *, panels=("stress", "film", "temperature"), figsize=(14.0, 4.2)):
+def plot_raceway_contact(result, *, panels=("stress", "film", "temperature"), figsize=None, ax=None, fig=None,
+                         columns=3):
     """Panels: ``"stress"`` contours of tau_xz / p0 below the contact of the first variant over
     x in [-3a, 3a], z in [0, 3a] (the thesis's Fig. 24, frictionless), ``"film"`` h_c, h_min and the
     corrected h_oc per convention with Lambda written on top, ``"temperature"`` surface and lubricant
-    maxima per convention against the lubricant's upper service temperature."""
-    import matplotlib.pyplot as plt
-
+    maxima per convention against the lubricant's upper service temperature. On the caller's axes (``ax=``, one
+    per panel) or figure (``fig=``) when given."""
     need = {"stress": ("b", "p_h"), "film": ("h_c", "h_min", "h_c_corrected", "Lambda_oc"),
             "temperature": ("surface_temperature_max", "lubricant_temperature_max")}
     chosen = [p for p in panels if all(k in result.outputs for k in need[p])]
     if not chosen:
         raise InputError(f"nothing to plot: the panels {list(panels)} need the outputs {need}")
-    fig, axes = plt.subplots(1, len(chosen), figsize=figsize, squeeze=False)
+    fig, axes = panel_axes(len(chosen), ax=ax, fig=fig, figsize=figsize, columns=columns,
+                           where="raceway_contact plot")
     labels = [v or "result" for v in result.variants]
     positions = np.arange(len(labels))
-    for ax, panel in zip(axes[0], chosen):
+    for ax, panel in zip(axes, chosen):
         if panel == "stress":
             from ..contact.subsurface import line_contact_stresses
 
@@ -58,6 +60,6 @@ def plot_raceway_contact(result, *, panels=("stress", "film", "temperature"), fi
                 ax.axhline(upper - CELSIUS, color="r", linestyle="--", label="upper service temperature")
             ax.set_xticks(positions, labels)
             ax.set(ylabel="temperature [°C]", title="temperatures")
-            ax.legend(fontsize=8, loc="lower right")
-    fig.tight_layout()
+            ax.set_ylim(top=1.45 * ax.get_ylim()[1])  # room for the legend above the bars and the limit
+            ax.legend(fontsize=8, loc="upper center")
     return fig

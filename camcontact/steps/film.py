@@ -138,23 +138,27 @@ def ehl_groups(w, R, E_reduced, u_m, eta0, alpha, piezoviscosity):
     return {"alpha_effective": alpha, "U": U, "G": G, "W": W, "M": M, "L": L}
 
 
-@step("film", provides=("h_c_isothermal", "h_min_isothermal", "film_validity", "film_solution"), model=model_name,
+@step("film", provides=("h_c_isothermal", "h_min_isothermal", "film_validity", "film_valid", "film_solution"),
+      model=model_name,
       version=model_version)
 def line_film(film_model, R, w, E_reduced, u_m, eta0, alpha_effective, U, G, W, M, L, lubricant_state, density_law,
               **inputs):
     """The isothermal films [m] of a line contact by ``film_model``, the model's validity note
-    ("ok", its range warnings, or the numerical solver's non-convergence) and its numerical solution
+    ("ok", its range warnings named by the model, or the numerical solver's non-convergence), ``film_valid``
+    (True where "ok") and its numerical solution
     (``film_solution``, None for a formula); ``inputs``: the further state names the model reads
     (:func:`model_reads`)."""
     state = {**inputs, "R": R, "w": w, "E_reduced": E_reduced, "u_m": u_m, "eta0": eta0, "alpha": alpha_effective,
              "lubricant_state": lubricant_state, "density_law": density_law}
     produced = film_model(state)
-    messages = film_model.check_validity({"U": U, "G": G, "W": W, "M": M, "L": L} | dict(produced))
+    messages = [f"{film_model.name}: {message}"
+                for message in film_model.check_validity({"U": U, "G": G, "W": W, "M": M, "L": L} | dict(produced))]
     record = produced.get("convergence")
     if record is not None and not record.converged:
         messages.append(f"numerical solution not converged: {record.message}")
     result = {f"{q}_isothermal": produced[q] for q in films_of(film_model)}
     result["film_validity"] = "ok" if not messages else "; ".join(messages)
+    result["film_valid"] = not messages
     result["film_solution"] = produced.get("ehl_solution")
     return result
 

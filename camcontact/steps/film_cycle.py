@@ -37,7 +37,7 @@ __all__ = [
 STEADY_M_LIMIT = 2000.0
 #: the fewest distinct angles per warm-started chain (each chain starts cold, ~0.1-0.4 s at level 8)
 MIN_CHAIN = 16
-FILM_OUTPUTS = (*FILMS, "film_regime", "film_solutions")
+FILM_OUTPUTS = (*FILMS, "film_regime", "film_valid", "film_solutions")
 
 
 @step("ehl_groups", provides=("alpha_effective", "U", "G", "W", "M", "L"))
@@ -149,12 +149,13 @@ def quasi_steady_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, 
             if not record.converged:
                 messages.append(f"not converged: {record.message}")
         elif use is film_model:
-            messages += use.check_validity({k: v[i] for k, v in groups.items()})
+            messages += [f"{use.name}: {message}" for message in use.check_validity({k: v[i] for k, v in groups.items()})]
         if (M[i] > STEADY_M_LIMIT or reversal[i]) and not note:
             messages.insert(0, f"u_m ≈ 0: entrainment reversal (u_m = {u_m[i]:.3g} m/s, M = {M[i]:.4g}); "
                                "the steady film → 0 there; squeeze film: effect 'squeeze'")
         regime[i] = "; ".join(messages) if messages else "ok"
-    return {**values, "film_regime": regime, "film_solutions": solutions}
+    return {**values, "film_regime": regime, "film_valid": np.array([r == "ok" for r in regime], dtype=bool),
+            "film_solutions": solutions}
 
 
 def steadiest_angle(w: np.ndarray, R: np.ndarray, u: np.ndarray) -> int:
@@ -203,7 +204,9 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
     for k, i in enumerate(order):
         note = "transient (squeeze)" + (" at u_m = 0" if u[i] == 0.0 else "")
         regime[i] = note if result.converged[k] else f"{note}: not converged: {result.records[k].message}"
-    return {**films, "film_regime": regime, "film_solutions": [None] * theta.size}
+    valid = np.empty(theta.size, dtype=bool)
+    valid[order] = np.asarray(result.converged, dtype=bool)
+    return {**films, "film_regime": regime, "film_valid": valid, "film_solutions": [None] * theta.size}
 
 
 def spike_height(solution) -> float:

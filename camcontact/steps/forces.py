@@ -130,13 +130,14 @@ def load_distribution(bearing, radial_load, axial_load):
 
 @step("loads", provides=("torque", "output_torque", "cam_axial_force", "cam_ball_force", "normal_force",
                          "ball_axial_resultant", "tangential_force_in", "tangential_force_out", "traction_needed_in",
-                         "traction_needed_out", "mu_min", "traction_check"),
+                         "traction_needed_out", "mu_min", "traction_check", "traction_sufficient"),
       model=lambda clamping: f"saccheto_6.5 ({clamping})")
 def ball_cone_contact_forces(power, input_speed, reduction_ratio, traction_coefficient, ball_count,
                              cone_contact_radius, cone_angle, cam_ramp_angle, cam_radius, cam_ball_count, clamping):
     """Torques [N m], the loading cam's forces and the normal and tangential forces [N] of a ball-cone
     contact at ``power`` [W] and ``input_speed`` [rad/s]; the traction each contact needs against the
-    traction coefficient Ct, as text."""
+    traction coefficient Ct: ``traction_sufficient`` (True where F_t/F_n < Ct at both contacts) and the
+    reason as text (``traction_check``)."""
     out = ball_cone_loads(power, input_speed, ball_count=ball_count, cone_radius=cone_contact_radius,
                           cone_angle=cone_angle, cam_angle=cam_ramp_angle, cam_radius=cam_radius,
                           cam_ball_count=cam_ball_count, reduction_ratio=reduction_ratio, clamping=clamping)
@@ -145,4 +146,5 @@ def ball_cone_contact_forces(power, input_speed, reduction_ratio, traction_coeff
     side = "input" if out["traction_needed_in"] >= out["traction_needed_out"] else "output"
     out["traction_check"] = (f"ok: needs {worst:.4g} at the {side} contact < Ct = {ct:.4g}" if worst < ct else
                              f"gross slip: the {side} contact needs F_t/F_n = {worst:.4g} >= Ct = {ct:.4g}")
+    out["traction_sufficient"] = bool(worst < ct)
     return out

@@ -98,15 +98,17 @@ def test_line_film_pan_hamrock_formula_and_validity():
     h_c, h_min = pan_hamrock(2e5, 0.01, E_STEEL, 2.0, 0.05, 2e-8)
     assert out["h_c_isothermal"] == pytest.approx(h_c, rel=1e-12)
     assert out["h_min_isothermal"] == pytest.approx(h_min, rel=1e-12)
-    assert out["film_validity"] == "ok"
+    assert out["film_validity"] == "ok" and out["film_valid"] is True
     heavy = _line_film(registry.get("film_models", "pan_hamrock"), w=E_STEEL * 0.01 * 1e-3)
-    assert heavy["film_validity"].startswith("W = 0.001 above the validated range")
+    # the status as a boolean, the reason as text naming the model
+    assert heavy["film_validity"].startswith("pan_hamrock: W = 0.001 above the validated range")
+    assert heavy["film_valid"] is False
 
 
 def test_line_film_moes_gives_only_h_c():
     """The Moes model provides h_c only: the step returns h_c_isothermal (Moes formula above) and the validity."""
     out = _line_film(registry.get("film_models", "moes"))
-    assert_provides(line_film, out, subset=("h_c_isothermal", "film_validity", "film_solution"))
+    assert_provides(line_film, out, subset=("h_c_isothermal", "film_validity", "film_valid", "film_solution"))
     assert out["film_solution"] is None  # a formula leaves no numerical solution
     assert out["h_c_isothermal"] == pytest.approx(moes_h_c(2e5, 0.01, E_STEEL, 2.0, 0.05, 2e-8), rel=1e-12)
 

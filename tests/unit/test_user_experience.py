@@ -5,6 +5,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import attrs
 import pytest
 
 import camcontact as cc
@@ -168,3 +169,53 @@ def test_cam_plot_is_a_grid_of_every_panel_and_draws_on_the_callers_axes(tmp_pat
     with pytest.raises(InputError, match="give ax= or fig=, not both"):
         result.plot(panels=("film",), ax=axes[0], fig=own)
     plt.close("all")
+
+
+def test_run_says_it_runs_the_base_case_of_a_sweep_file(tmp_path, capsys):
+    scene = ROOT / "tutorials" / "ls1_speed_sweep.toml"
+    assert main(["run", str(scene), "--csv", str(tmp_path / "base.csv")]) == 0
+    out = capsys.readouterr().out
+    assert "[sweep] table of 9 cases over speed, follower.roller_radius: this runs the base case; camcontact sweep" in out
+    assert "th row" not in out  # the per-angle table says "one row in N of M", not "every 2th row"
+
+
+def test_every_scene_plot_takes_the_callers_axes(tmp_path):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    bearing = cc.Analysis(load_scene(ROOT / "tutorials" / "pellet_mill_bearing.toml").component).run()
+    fig = plt.figure()
+    axes = [fig.add_subplot(1, 2, 1, projection="polar"), fig.add_subplot(1, 2, 2)]
+    assert bearing.plot(panels=("load", "film"), ax=axes) is fig and axes[0].get_title() == "roller load Q [kN]"
+    flat = plt.subplots(1, 2)[1]
+    with pytest.raises(InputError, match="a panel needs a polar Axes, got a rectilinear one"):
+        bearing.plot(panels=("load", "film"), ax=flat)
+    for name in ("pellet_mill_line_contact", "pellet_mill_raceway_contact", "forti_ball_cone_cvt"):
+        scene = load_scene(ROOT / "tutorials" / f"{name}.toml")
+        result = scene.analysis().run()
+        figure = result.plot()
+        figure.savefig(tmp_path / f"{name}.png")
+        own = plt.figure()
+        assert result.plot(fig=own) is own and len(own.axes) == len(figure.axes)  # panels and colour bars
+    plt.close("all")
+
+
+def test_status_is_data_beside_its_reason():
+    """Booleans for the status, text only as the reason: the cam film's validity per angle (the reason names
+    the film model), the line film's, the CVT's traction need against Ct."""
+    cam = cc.Analysis(load_scene().component).run().to_frame()
+    assert cam["film_valid"].dtype == bool and cam["film_valid"].all() and (cam["film_regime"] == "ok").all()
+    contact = load_scene(ROOT / "tutorials" / "pellet_mill_line_contact.toml").component
+    light = attrs.evolve(contact, load="10 N")  # W' far below Pan-Hamrock's fitted range
+    line = cc.Analysis(light, outputs=["film_valid", "film_validity"], models={"film": ["moes", "pan_hamrock"]}).run()
+    assert line["film_valid"] == [True, False]
+    assert line["film_validity"][1].startswith("pan_hamrock: W = ")
+    cvt = load_scene(ROOT / "tutorials" / "forti_ball_cone_cvt.toml").component
+    for ct, sufficient in ((0.095, True), (0.05, False)):
+        scene = attrs.evolve(cvt, cvt=attrs.evolve(cvt.cvt, traction_coefficient=ct))
+        result = cc.Analysis(scene, outputs=["traction_sufficient", "traction_check"]).run()
+        assert result["traction_sufficient"] is sufficient
+        assert result["traction_check"].startswith("ok" if sufficient else "gross slip")
