@@ -27,7 +27,7 @@ step_graph.add_scene_loader(_register_builtin_scenes)
 #: user-facing names of deeper modules, imported on first use (``cc.MotionProgram``) to keep the import cheap
 _LAZY = {
     "MotionProgram": "kinematics.motion_program", "Segment": "kinematics.motion_program",
-    "load_scene": "scene_file", "sweep_frame": "sweep", "run_sweep": "sweep", "read_sweep": "sweep",
+    "load_scene": "scene_file", "sweep_frame": "sweep", "run_sweep": "sweep", "read_sweep": "sweep", "to_xarray": "sweep",
     "cvt_map": "scenes.ball_cone_cvt_map", "plot_cvt_map": "scenes.ball_cone_cvt_map",
     "stribeck_sweep": "scenes.stribeck", "plot_stribeck_curve": "scenes.stribeck",
 }
@@ -80,5 +80,6 @@ __all__ = [
     "run_sweep",
     "stribeck_sweep",
     "sweep_frame",
+    "to_xarray",
     "ureg",
 ]

@@ -35,8 +35,10 @@ from .analysis import Analysis
 from .sweep_cases import TABLES, cases_of, check_path, evolve_path
 from .sweep_cases import run_sweep as run_cases_sweep
 from .sweep_stream import read_sweep
+from .sweep_xarray import to_xarray
 
-__all__ = ["TABLES", "cases_of", "check_path", "evolve_path", "read_sweep", "run_sweep", "sweep_frame", "worker_count"]
+__all__ = ["TABLES", "cases_of", "check_path", "evolve_path", "read_sweep", "run_sweep", "sweep_frame", "to_xarray",
+           "worker_count"]
 
 
 def run_sweep(scene: Any, grid: Any, *, strict: bool = False, **options: Any):

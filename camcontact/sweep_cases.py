@@ -59,7 +59,7 @@ import numpy as np
 import pint
 
 from .errors import CamcontactWarning, CaseTimeout, InputError, SweepInterruptedWarning
-from .units import to_quantity, ureg
+from .units import ureg
 
 __all__ = ["MAX_SWEEP_CASES", "TABLES", "CaseAlarm", "case_rows", "cases_of", "check_case_count", "check_path",
            "evolve_path", "finished_cases", "has_index", "run_case", "run_cases", "run_sweep"]
@@ -136,7 +136,8 @@ def _parameter_columns(paths: Sequence[str], cases: Sequence[tuple]) -> list[tup
         if all(isinstance(v, (str, pint.Quantity)) for v in values):
             try:
                 quantities = [v if isinstance(v, pint.Quantity) else ureg.Quantity(v) for v in values]
-                if all(not q.dimensionless for q in quantities):
+                # a unit each (angles and percentages too, which pint counts dimensionless): numeric cells
+                if all(not q.unitless for q in quantities) and len({q.dimensionality for q in quantities}) == 1:
                     unit = quantities[0].units
             except Exception:
                 unit = None
@@ -144,7 +145,7 @@ def _parameter_columns(paths: Sequence[str], cases: Sequence[tuple]) -> list[tup
             label = f"{unit:~P}".replace(" ", "")
 
             def cell(v, unit=unit, path=path):
-                q = v if isinstance(v, pint.Quantity) else to_quantity(v, str(unit.dimensionality), where=path)
+                q = v if isinstance(v, pint.Quantity) else ureg.Quantity(v)  # parsed once already, above
                 return float(q.to(unit).magnitude)
 
             columns.append((f"{path} [{label}]", cell))
@@ -166,7 +167,21 @@ def _case_rows(runner: Any, scene: Any, paths: Sequence[str], values: Sequence[A
         frame = result.summary_frame(units)
     else:
         frame = result.to_frame(units)
+        if result.index is not None:  # the case's summaries (cycle minima, lives) beside its per-index rows
+            frame = _with_summaries(frame, result.summary_frame(units))
     return frame.to_dict(orient="records")
+
+
+def _with_summaries(rows: Any, summary: Any) -> Any:
+    """The per-index ``rows`` of a result with its scalar outputs (``summary``, one row per variant) on each of
+    the variant's rows; the status columns (failed, error, not_given) stay the per-index frame's."""
+    scalars = [c for c in summary.columns if c not in rows.columns and c not in ("variant", "failed", "error",
+                                                                                  "not_given")]
+    if not scalars:
+        return rows
+    if "variant" in rows and "variant" in summary:
+        return rows.merge(summary[["variant", *scalars]], on="variant", how="left", sort=False)
+    return rows.assign(**{c: summary[c].iloc[0] for c in scalars})
 
 
 def run_case(runner: Any, scene: Any, paths: Sequence[str], values: Sequence[Any], outputs, models, effects,
@@ -561,8 +576,20 @@ def run_sweep(runner: Any, scene: Any, grid: Any, *, outputs=None, models=None, 
         frame = tidy_table(pd.DataFrame([row for n in sorted(collected) for row in collected[n]]))
     if frame.empty and "case" not in frame:
         frame = _empty_table(columns)
+    frame.attrs["dimensions"] = _dimensions(frame, [header for header, _ in columns], table)
     _report_missing(frame, len(cases), stop, path)
     return frame
+
+
+def _dimensions(frame: Any, parameters: list[str], table: str) -> list[str]:
+    """The columns a full grid of this table is indexed by: the swept paths, the variant (several models in a
+    slot) and, for a per-index table, the index column (cam angle, roller) — the first after them."""
+    dims = list(parameters)
+    if "variant" in frame.columns:
+        dims.append("variant")
+    if table == "index":
+        dims += [c for c in frame.columns if c not in ("case", *dims)][:1]
+    return dims
 
 
 def has_index(analysis: Any) -> bool:

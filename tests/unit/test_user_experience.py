@@ -219,3 +219,32 @@ def test_status_is_data_beside_its_reason():
         result = cc.Analysis(scene, outputs=["traction_sufficient", "traction_check"]).run()
         assert result["traction_sufficient"] is sufficient
         assert result["traction_check"].startswith("ok" if sufficient else "gross slip")
+
+
+def test_gridded_sweeps_become_labelled_arrays_with_numeric_angles_and_summaries():
+    """A cam study over speed x roller radius: per-angle rows carry their case's cycle summaries (one call), the
+    swept angles are numbers, and to_xarray gives a Dataset over (speed, roller radius, cam angle) with units."""
+    pytest.importorskip("xarray")
+    follower = load_scene().component
+    frame = cc.Analysis(follower, outputs=["h_min", "h_min_cycle"]).sweep(
+        {"speed": ["1000 rpm", "3000 rpm"], "follower.roller_radius": ["12 mm", "15 mm"]}, progress=False)
+    assert frame.attrs["dimensions"] == ["speed [rpm]", "follower.roller_radius [mm]", "cam_angle [deg]"]
+    per_case = frame.groupby("case")
+    assert (per_case["h_min_cycle [µm]"].nunique() == 1).all()  # the case's summary on each of its rows
+    assert per_case["h_min [µm]"].min().to_numpy() == pytest.approx(per_case["h_min_cycle [µm]"].first().to_numpy())
+    ds = cc.to_xarray(frame)
+    assert dict(ds.sizes) == {"speed": 2, "follower.roller_radius": 2, "cam_angle": 360}
+    assert ds["h_min"].attrs["units"] == "µm" and ds["speed"].attrs["units"] == "rpm"
+    fast = float(ds["h_min_cycle"].sel(speed=3000.0, **{"follower.roller_radius": 15.0}).isel(cam_angle=0))
+    slow = float(ds["h_min_cycle"].sel(speed=1000.0, **{"follower.roller_radius": 15.0}).isel(cam_angle=0))
+    assert fast > slow
+    read_back = frame.copy()
+    read_back.attrs = {}  # as read_sweep gives it from a CSV file: the dimensions are named by hand
+    with pytest.raises(InputError, match="give dims="):
+        cc.to_xarray(read_back)
+    assert dict(cc.to_xarray(read_back, dims=frame.attrs["dimensions"]).sizes) == dict(ds.sizes)
+    with pytest.raises(InputError, match="rows repeat a combination"):
+        cc.to_xarray(frame, dims=["speed [rpm]"])
+    cvt = load_scene(ROOT / "tutorials" / "forti_ball_cone_cvt.toml").component
+    angles = cc.sweep_frame(cvt, {"cvt.cone_angle": ["25 deg", "30 deg"]}, outputs=["efficiency"], progress=False)
+    assert angles["cvt.cone_angle [deg]"].tolist() == [25.0, 30.0]
