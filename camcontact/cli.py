@@ -295,6 +295,9 @@ def _sweep(args: argparse.Namespace) -> int:
     if args.quiet:
         if args.parquet:
             _write(Path(args.parquet), "--parquet", lambda path: write_parquet(frame, path))
+        if failed:  # quiet, not silent about what did not run
+            print(f"camcontact: warning: {failed} of {count} cases failed (their reasons are in {csv_path})",
+                  file=sys.stderr)
         return 0
     with __import__("pandas").option_context("display.width", 250, "display.max_columns", 30):
         print(frame.head(40).to_string(index=False, float_format=lambda v: f"{v:.5g}"))
@@ -451,7 +454,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--debug", action="store_true", help="print the traceback of an error")
     parser.add_argument("-v", "--verbose", action="count", default=0,
                         help="log each step as it runs, with its model and time, on stderr (-vv: debug)")
-    parser.add_argument("-q", "--quiet", action="store_true", help="print nothing but errors (the files are written)")
+    parser.add_argument("-q", "--quiet", action="store_true",
+                        help="run and sweep print nothing but errors and failed cases (the files are written)")
     commands = parser.add_subparsers(dest="command", required=True)
     run = commands.add_parser("run", help="run a scene file (default: the embedded default scene)")
     run.add_argument("scene", nargs="?", help="scene TOML file")
@@ -499,8 +503,17 @@ def main(argv: list[str] | None = None) -> int:
     if args.verbose and args.quiet:
         _error("-v and -q: choose one")
         return EXIT_INPUT
+    import logging
+
+    logger = logging.getLogger("camcontact")
+    saved = (logger.level, logger.disabled)
     _configure_logging(args.verbose)
-    return _dispatch(args)
+    try:
+        return _dispatch(args)
+    finally:  # main() leaves the logger as it found it (a notebook or test calling it keeps its own settings)
+        _configure_logging(0)
+        logger.setLevel(saved[0])
+        logger.disabled = saved[1]
 
 
 def _configure_logging(verbosity: int) -> None:

@@ -19,14 +19,27 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["column_name", "convert", "result_frame", "steps_frame", "text_table", "unexplained_values", "unit_label"]
 
 
-_SUPERSCRIPT = str.maketrans("0123456789-.", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻·")
+_SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
+
+
+#: names whose pint symbol is not what a label should show (pint's micron symbol is the bare prefix "µ")
+_SYMBOL_OVERRIDES = {"micron": "µm", "microns": "µm", "dimensionless": "-"}
 
 
 def _symbol(match: re.Match) -> str:
+    name = match.group(0)
+    if name in _SYMBOL_OVERRIDES:
+        return _SYMBOL_OVERRIDES[name]
     try:
-        return ureg.get_symbol(match.group(0))
+        return ureg.get_symbol(name)
     except Exception:  # pint: not a unit name (cannot happen for a unit that parsed)
-        return match.group(0)
+        return name
+
+
+def _exponent(match: re.Match) -> str:
+    """An integer exponent as superscript (``²``, ``⁻¹``); a fractional one stays ``^0.5``."""
+    power = match.group(1)
+    return power.translate(_SUPERSCRIPT) if "." not in power else f"^{power}"
 
 
 def unit_label(unit: str) -> str:
@@ -39,9 +52,10 @@ def unit_label(unit: str) -> str:
         ureg.parse_units(unit)
     except Exception as exc:  # pint: undefined unit or syntax
         raise InputError(f"unknown unit {unit!r}: {exc}") from None
-    text = re.sub(r"(?:\^|\*\*)\s*(-?[0-9.]+)", lambda m: m.group(1).translate(_SUPERSCRIPT), unit.strip())
+    text = re.sub(r"\s*(\*\*|[*/^()])\s*", r"\1", unit.strip())  # no spaces around operators
+    text = re.sub(r"(?:\^|\*\*)(-?[0-9.]+)", _exponent, text)
     text = re.sub(r"[A-Za-zµΩ_]+", _symbol, text)
-    return re.sub(r"\s*\*\s*|\s+", "·", text)
+    return re.sub(r"\*|\s+", "·", text)
 
 
 def column_name(name: str, unit: str | None) -> str:
@@ -158,7 +172,8 @@ def text_table(frame: pd.DataFrame, transpose: bool = True) -> str:
 def unexplained_values(frame: pd.DataFrame) -> list[tuple[int, str]]:
     """(row position, column) of every NaN or infinite number in a report frame without its reason beside it.
 
-    A non-finite cell is explained when its row ``failed`` (a step failed; ``error`` says why), when its
+    A non-finite cell is explained when its row ``failed`` or has an ``error`` (a step or a sweep's case
+    failed, and says why), when its
     quantity is listed in the row's ``not_given`` (this variant's models do not give it), or by a status
     cell of its quantity's :attr:`~camcontact.quantities.QuantitySpec.nan_when` in the row (an unloaded
     roller, a traction drive in gross slip, a friction correlation outside its validity). Reports of
@@ -174,7 +189,8 @@ def unexplained_values(frame: pd.DataFrame) -> list[tuple[int, str]]:
         reasons = QUANTITIES[name].nan_when if name in QUANTITIES else ()
         for position in np.flatnonzero(~np.isfinite(values)):
             row = frame.iloc[position]
-            if bool(row.get("failed", False)) or name in str(row.get("not_given", "")).split(", "):
+            failed = bool(row.get("failed", False)) or str(row.get("error", "") or "") not in ("", "nan")
+            if failed or name in str(row.get("not_given", "")).split(", "):
                 continue
             if any(status in row.index and row[status] == value for status, value in reasons):
                 continue

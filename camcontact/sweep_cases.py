@@ -137,7 +137,8 @@ def _parameter_columns(paths: Sequence[str], cases: Sequence[tuple]) -> list[tup
             try:
                 quantities = [v if isinstance(v, pint.Quantity) else ureg.Quantity(v) for v in values]
                 # a unit each (angles and percentages too, which pint counts dimensionless): numeric cells
-                if all(not q.unitless for q in quantities) and len({q.dimensionality for q in quantities}) == 1:
+                if all(str(q.units) != "dimensionless" for q in quantities) \
+                        and len({q.dimensionality for q in quantities}) == 1:
                     unit = quantities[0].units
             except Exception:
                 unit = None
@@ -174,12 +175,21 @@ def _case_rows(runner: Any, scene: Any, paths: Sequence[str], values: Sequence[A
 
 def _with_summaries(rows: Any, summary: Any) -> Any:
     """The per-index ``rows`` of a result with its scalar outputs (``summary``, one row per variant) on each of
-    the variant's rows; the status columns (failed, error, not_given) stay the per-index frame's."""
+    the variant's rows; ``failed`` and ``error`` stay the per-index frame's (both frames have them alike), the
+    ``not_given`` of both are joined (a variant without a summary says so beside its NaN)."""
     scalars = [c for c in summary.columns if c not in rows.columns and c not in ("variant", "failed", "error",
                                                                                   "not_given")]
+    variants = rows["variant"] if "variant" in rows else None
+    index = (list(summary["variant"]).index(v) for v in variants) if variants is not None else None
+    if "not_given" in summary:
+        extra = list(summary["not_given"])
+        own = list(rows["not_given"]) if "not_given" in rows else [""] * len(rows)
+        positions = list(index) if index is not None else [0] * len(rows)
+        rows = rows.assign(not_given=[", ".join(part for part in (mine, extra[k]) if part)
+                                      for mine, k in zip(own, positions)])
     if not scalars:
         return rows
-    if "variant" in rows and "variant" in summary:
+    if variants is not None and "variant" in summary:
         return rows.merge(summary[["variant", *scalars]], on="variant", how="left", sort=False)
     return rows.assign(**{c: summary[c].iloc[0] for c in scalars})
 
@@ -577,6 +587,8 @@ def run_sweep(runner: Any, scene: Any, grid: Any, *, outputs=None, models=None, 
     if frame.empty and "case" not in frame:
         frame = _empty_table(columns)
     frame.attrs["dimensions"] = _dimensions(frame, [header for header, _ in columns], table)
+    frame.attrs["index"] = frame.attrs["dimensions"][-1] if table == "index" and len(frame.attrs["dimensions"]) > len(
+        columns) + ("variant" in frame.columns) else None
     _report_missing(frame, len(cases), stop, path)
     return frame
 
@@ -587,8 +599,8 @@ def _dimensions(frame: Any, parameters: list[str], table: str) -> list[str]:
     dims = list(parameters)
     if "variant" in frame.columns:
         dims.append("variant")
-    if table == "index":
-        dims += [c for c in frame.columns if c not in ("case", *dims)][:1]
+    if table == "index":  # the index column comes first after them (absent when every case failed)
+        dims += [c for c in frame.columns if c not in ("case", "failed", "error", "not_given", *dims)][:1]
     return dims
 
 

@@ -28,12 +28,16 @@ def _name_and_unit(header: str) -> tuple[str, str | None]:
     return (match["name"], match["unit"]) if match else (header, None)
 
 
-def to_xarray(frame: Any, dims: Sequence[str] | None = None) -> Any:
+def to_xarray(frame: Any, dims: Sequence[str] | None = None, index: str | None = None) -> Any:
     """The sweep table ``frame`` as an :class:`xarray.Dataset` over ``dims`` (column headers; default the
     table's own, ``frame.attrs["dimensions"]``): coordinates and variables named without their units, which
     go to each one's ``units`` attribute (``"-"`` for a plain number); ``case``, ``error`` and ``failed``
-    stay variables, so failed cases are visible in the array. InputError for a table that is not a grid
-    over ``dims`` (a repeated combination) or names a column it lacks.
+    stay variables. A variable that does not vary along the ``index`` dimension (default
+    ``frame.attrs["index"]``: the cam angle or roller of a per-index table) — a case's summary — is kept
+    without it, so ``ds["h_min_cycle"].sel(speed=2000)`` is one number. A failed case whose rows have no
+    index value cannot sit on the grid: ``ds.attrs["failed_cases"]`` lists ``"case N: reason"``.
+    InputError for a table that is not a grid over ``dims`` (a repeated combination) or names a column it
+    lacks.
 
     >>> import camcontact as cc
     >>> steel = cc.Material(E="210 GPa", nu=0.3)
@@ -56,11 +60,24 @@ def to_xarray(frame: Any, dims: Sequence[str] | None = None) -> Any:
     missing = [d for d in dims if d not in frame.columns]
     if missing:
         raise InputError(f"to_xarray: dims {missing} are not columns of the table; allowed: {list(frame.columns)}")
+    index = index if index is not None else frame.attrs.get("index")
+    off_grid = frame[dims].isna().any(axis=1)
+    failed = [f"case {int(c)}: {e}" for c, e in zip(frame.loc[off_grid, "case"], frame.loc[off_grid, "error"])] \
+        if {"case", "error"} <= set(frame.columns) else []
+    frame = frame[~off_grid]
     repeated = frame.duplicated(subset=dims)
     if repeated.any():
         raise InputError(f"to_xarray: {int(repeated.sum())} rows repeat a combination of {dims}: the table is not a "
                          "grid over them (add the variant or index column to dims)")
     dataset = frame.set_index(dims).to_xarray()
+    if index in dataset.dims:
+        for name in list(dataset.data_vars):
+            values = dataset[name]
+            if index not in values.dims:
+                continue
+            first = values.isel({index: 0})
+            if bool(((values == first) | (values.isnull() & first.isnull())).all()):
+                dataset[name] = first.drop_vars(index)
     renames, units = {}, {}
     for header in [*dataset.coords, *dataset.data_vars]:
         name, unit = _name_and_unit(str(header))
@@ -71,4 +88,5 @@ def to_xarray(frame: Any, dims: Sequence[str] | None = None) -> Any:
     dataset = dataset.rename(renames)
     for name, unit in units.items():
         dataset[name].attrs["units"] = unit
+    dataset.attrs["failed_cases"] = failed
     return dataset

@@ -58,9 +58,10 @@ __all__ = [
 #: The one unit registry of camcontact (also pint's application registry).
 ureg = pint.UnitRegistry()
 pint.set_application_registry(ureg)
-#: a count of a million revolutions, the unit of bearing rating lives (ISO 281): dimensionless, so a life held as
-#: a plain count of revolutions converts to it (pint's ``revolution`` is an angle, 2 pi rad)
-ureg.define("million_revolutions = 1e6 = Mrev")
+#: bearing rating lives (ISO 281) count revolutions: a dimension of their own, so that a life never converts to
+#: pint's ``revolution``, an angle of 2 pi rad (a factor 2 pi off); shown in millions (``Mrev``)
+ureg.define("revolution_count = [revolution_count] = rev_count")
+ureg.define("million_revolutions = 1e6 * revolution_count = Mrev")
 Q_ = ureg.Quantity
 #: type of the Quantity fields of components
 Quantity = pint.Quantity

@@ -3,7 +3,9 @@
 Build: ``.venv/bin/sphinx-build -W -b html docs docs/_build/html`` (the ``docs`` extra; the test suite builds it,
 tests/docs/test_docs_site.py). The tutorials are executed into a gallery (sphinx-gallery) from a copy of
 ``tutorials/`` (their figures and files land in the copy, not in the repository); the accuracy-vs-time page
-runs the benchmarks' quick modes for its tables and Pareto plot.
+runs the benchmarks' quick modes for its tables and Pareto plot. Both happen when the build starts
+(``builder-inited``), not when this file is read. Sphinx-gallery and autosummary write their pages into
+``docs/`` (``tutorials/``, ``_generated/``; gitignored): one build at a time.
 """
 
 from __future__ import annotations
@@ -48,13 +50,6 @@ nitpicky = False
 
 # ------------------------------------------------------------------ the tutorials gallery
 GALLERY_SOURCE = DOCS / "_gallery_src"
-if GALLERY_SOURCE.exists():
-    shutil.rmtree(GALLERY_SOURCE)
-shutil.copytree(ROOT / "tutorials", GALLERY_SOURCE, ignore=shutil.ignore_patterns("__pycache__", "*.png", "*.csv"))
-convert_tree(ROOT / "tutorials", GALLERY_SOURCE)
-(GALLERY_SOURCE / "GALLERY_HEADER.rst").write_text(
-    "Tutorials\n=========\n\nThe scripts of ``tutorials/``, executed when the site is built: what each prints and "
-    "draws is below its code.\n", encoding="utf-8")
 sphinx_gallery_conf = {
     "examples_dirs": str(GALLERY_SOURCE),
     "gallery_dirs": "tutorials",
@@ -64,13 +59,31 @@ sphinx_gallery_conf = {
     "remove_config_comments": False,
     "within_subsection_order": "FileNameSortKey",
 }
-
-# ------------------------------------------------------------------ accuracy vs time: the benchmarks' quick modes
 GENERATED = DOCS / "_generated" / "accuracy"
-GENERATED.mkdir(parents=True, exist_ok=True)
-for mode in ([], ["--friction"], ["--traction"]):
-    subprocess.run([sys.executable, str(ROOT / "benchmarks" / "accuracy_vs_time.py"), *mode, "--quick", "--out",
-                    str(GENERATED)], check=True, cwd=ROOT, capture_output=True)
+
+
+def prepare_gallery(app) -> None:
+    """builder-inited, before sphinx-gallery's: a fresh converted copy of ``tutorials/`` (their figures and files
+    land in the copy, gitignored, not in the repository)."""
+    if GALLERY_SOURCE.exists():
+        shutil.rmtree(GALLERY_SOURCE)
+    shutil.copytree(ROOT / "tutorials", GALLERY_SOURCE, ignore=shutil.ignore_patterns("__pycache__", "*.png", "*.csv"))
+    convert_tree(ROOT / "tutorials", GALLERY_SOURCE)
+    (GALLERY_SOURCE / "GALLERY_HEADER.rst").write_text(
+        "Tutorials\n=========\n\nThe scripts of ``tutorials/``, executed when the site is built: what each prints "
+        "and draws is below its code.\n", encoding="utf-8")
+
+
+def run_benchmarks(app) -> None:
+    """builder-inited: the accuracy-vs-time page's tables and plot from the benchmarks' quick modes; a benchmark
+    that fails stops the build with its own error output."""
+    GENERATED.mkdir(parents=True, exist_ok=True)
+    for mode in ([], ["--friction"], ["--traction"]):
+        command = [sys.executable, str(ROOT / "benchmarks" / "accuracy_vs_time.py"), *mode, "--quick", "--out",
+                   str(GENERATED)]
+        done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True)
+        if done.returncode != 0:
+            raise RuntimeError(f"docs: {' '.join(command[1:])} failed ({done.returncode}):\n{done.stderr[-3000:]}")
 
 
 # ------------------------------------------------------------------ docstrings: |x| is an absolute value
@@ -103,4 +116,6 @@ def escape_absolute_values(app, what, name, obj, options, lines) -> None:
 
 
 def setup(app):
+    app.connect("builder-inited", prepare_gallery, priority=100)  # before sphinx-gallery's (500)
+    app.connect("builder-inited", run_benchmarks, priority=100)
     app.connect("autodoc-process-docstring", escape_absolute_values)

@@ -389,14 +389,17 @@ class SpinTractionContact:
     def centre_line(self, state: SpinTraction, n: int = 41) -> CentreLineTraction:
         """Pressure and traction T_x on y = 0 for a ``state`` of this contact (its creepages and
         temperature rise), at ``n`` element centres from the leading edge x = a (the Hertz pressure, or the
-        field's interpolated)."""
+        field's interpolated; with asperities the film's plus theirs, the contact's whole pressure)."""
         x = self.a * (1.0 - (np.arange(n) + 0.5) * (2.0 / n))
         if self.field is None:
             pressure, film = self.p_h * np.sqrt(np.clip(1.0 - (x / self.a) ** 2, 0.0, None)), self.h
         else:
             pressure, film = self.field.centre_line(x)
         tx, _, _ = self._traction_at(state, x, np.zeros(n), pressure, film)
-        return CentreLineTraction(x[None, :], np.zeros(1), tx[None, :], pressure[None, :])
+        # the record's pressure is the whole contact's (the film's and the asperities'): readers take Tx/p as the
+        # traction coefficient of the surface (the slice stresses, Saccheto §3.4)
+        total = pressure + np.where(np.abs(x) < self.a, self.asperity_pressure, 0.0)
+        return CentreLineTraction(x[None, :], np.zeros(1), tx[None, :], total[None, :])
 
     def traction_map(self, state: SpinTraction, n: int = 41) -> TractionMap:
         """The traction of ``state`` over the contact for a map: on an n x n grid of the Hertz ellipse, or on

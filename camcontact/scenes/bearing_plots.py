@@ -10,13 +10,24 @@ from .plot_layout import panel_axes
 __all__ = ["plot_bearing"]
 
 
-def plot_bearing(result, *, panels=("load", "pressure", "film"), figsize=None, ax=None, fig=None, columns=3):
+#: the film parameter's bands: boundary below 1, mixed to 3, full film above (as the cam plot's)
+LAMBDA_BANDS = ((0.0, 1.0, "tab:red", "boundary"), (1.0, 3.0, "tab:orange", "mixed"))
+#: (output key, scale to the axis unit, axis label, title) of the per-contact panels
+CONTACT_PANELS = {"pressure": ("p_h", 1e-6, "p_h [MPa]", "Hertz pressure per contact"),
+                  "film": ("h_min", 1e6, "h_min [µm]", "minimum film per contact"),
+                  "lambda": ("Lambda", 1.0, "Λ = h / σ [-]", "film parameter per contact")}
+
+
+def plot_bearing(result, *, panels=("load", "pressure", "film", "lambda"), figsize=None, ax=None, fig=None,
+                 columns=2):
     """Panels: ``"load"`` roller loads over the azimuth (polar, one trace per row), ``"pressure"``
-    Hertz p_h at the inner and outer raceway against the azimuth, ``"film"`` h_min per contact; in a grid of
-    ``columns`` per row, or on the caller's axes (``ax=``, one per panel; the load panel's polar) or figure
-    (``fig=``)."""
-    need = {"load": ("azimuth", "Q", "roller_row"), "pressure": ("azimuth", "p_h_inner", "p_h_outer", "roller_row"),
-            "film": ("azimuth", "h_min_inner", "h_min_outer", "roller_row")}
+    Hertz p_h at the inner and outer raceway against the azimuth, ``"film"`` h_min per contact, ``"lambda"``
+    Lambda per contact with the regime bands (boundary below 1, mixed to 3); in a grid of ``columns`` per
+    row, or on the caller's axes (``ax=``, one per panel; the load panel's polar) or figure (``fig=``)."""
+    need = {"load": ("azimuth", "Q", "roller_row")} | {
+        panel: ("azimuth", f"{key}_inner", f"{key}_outer", "roller_row") for panel, (key, *_) in CONTACT_PANELS.items()}
+    if unknown := sorted(set(panels) - set(need)):
+        raise InputError(f"unknown bearing plot panels {unknown}; choose from {sorted(need)}")
     chosen = [p for p in panels if all(k in result.outputs for k in need[p])]
     if not chosen:
         raise InputError(f"nothing to plot: the panels {list(panels)} need the outputs {need}")
@@ -38,15 +49,19 @@ def plot_bearing(result, *, panels=("load", "pressure", "film"), figsize=None, a
             ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
             continue
         degrees = np.degrees(np.angle(np.exp(1j * azimuth)))
+        key, scale, label, title = CONTACT_PANELS[panel]
+        top = 0.0
         for race, style in (("inner", "o"), ("outer", "s")):
-            key, scale, unit = (f"p_h_{race}", 1e-6, "MPa") if panel == "pressure" else (f"h_min_{race}", 1e6, "µm")
             for k in np.unique(rows):
                 mask = rows == k
                 order = np.argsort(degrees[mask])
-                ax.plot(degrees[mask][order], np.asarray(row[key])[mask][order] * scale, marker=style, ms=3,
-                        label=f"{race}, row {int(k)}")
-        ax.set(xlabel="azimuth [deg] (0: load line)",
-               ylabel="p_h [MPa]" if panel == "pressure" else "h_min [µm]",
-               title="Hertz pressure per contact" if panel == "pressure" else "minimum film per contact")
+                values = np.asarray(row[f"{key}_{race}"], dtype=float)[mask][order] * scale
+                top = max(top, float(np.nanmax(values, initial=0.0)))
+                ax.plot(degrees[mask][order], values, marker=style, ms=3, label=f"{race}, row {int(k)}")
+        if panel == "lambda":
+            for low, high, colour, name in LAMBDA_BANDS:
+                ax.axhspan(low, high, color=colour, alpha=0.12, label=name)
+            ax.set_ylim(0.0, max(3.0, 1.1 * top))
+        ax.set(xlabel="azimuth [deg] (0: load line)", ylabel=label, title=title)
         ax.legend(fontsize=7)
     return fig

@@ -38,7 +38,15 @@ def panel_axes(count: int, *, ax: Any = None, fig: Any = None, figsize: tuple[fl
         return axes[0].figure, axes
     cols = max(1, min(columns, count))
     rows = math.ceil(count / cols)
-    if fig is None:
+    if fig is not None:
+        if fig.axes:
+            raise InputError(f"{where}: fig= already has {len(fig.axes)} axes, which the panels would cover; give an "
+                             "empty figure (or a subfigure), or the axes to draw on as ax=")
+        if figsize is not None:
+            raise InputError(f"{where}: figsize= with fig=: the figure has its size (fig.set_size_inches)")
+        if hasattr(fig, "set_layout_engine") and fig.get_layout_engine() is None:  # a SubFigure has its parent's
+            fig.set_layout_engine("constrained")
+    else:
         fig = plt.figure(figsize=figsize or (PANEL_SIZE[0] * cols, PANEL_SIZE[1] * rows), layout="constrained")
         fig.get_layout_engine().set(wspace=0.08, hspace=0.06)  # room between a twin axis' label and the next panel
     grid = fig.add_gridspec(rows, cols)

@@ -189,6 +189,14 @@ def test_bearing_plot(tmp_path):
     import matplotlib
 
     matplotlib.use("Agg")
-    figure = cc.Analysis(scene()).run().plot()
+    result = cc.Analysis(scene()).run()
+    figure = result.plot()
     figure.savefig(tmp_path / "bearing.png")
-    assert len(figure.axes) == 3
+    titles = [ax.get_title() for ax in figure.axes]
+    assert titles == ["roller load Q [kN]", "Hertz pressure per contact", "minimum film per contact",
+                      "film parameter per contact"]
+    # Lambda per roller with its regime bands (the plot's y range covers the mixed band at least)
+    lam = figure.axes[3]
+    assert lam.get_ylim()[1] >= 3.0 and {"boundary", "mixed"} <= {t.get_text() for t in lam.get_legend().get_texts()}
+    with pytest.raises(cc.InputError, match="unknown bearing plot panels \\['kappa'\\]"):
+        result.plot(panels=("kappa",))

@@ -325,3 +325,14 @@ def test_model_splits_the_hertz_load_between_film_and_asperities():
         model.contact(A, B, PH, H, V, State(), field=hertz_field(), asperity_load_fraction=0.1)
     with pytest.raises(InputError, match="boundary_friction"):
         contact(asperity_pressure=P_A, boundary_friction=-0.1)
+
+
+def test_centre_line_records_the_whole_contact_pressure_with_asperities():
+    """The centre-line record's pressure is the film's (1 - f) p_h sqrt(1 - x^2/a^2) plus the asperities' uniform
+    p_a: its readers take Tx/p as the surface's traction coefficient (the slice stresses), which a film-only
+    pressure would inflate by 1/(1 - f)."""
+    mixed = contact(p_h=0.6 * PH, asperity_pressure=0.4 * 2 * PH / 3, boundary_friction=MU_B)
+    line = mixed.centre_line(mixed.evaluate(1e-4, 0.0, 20.0))
+    x = line.x[0]
+    expected = 0.6 * PH * np.sqrt(1 - (x / A) ** 2) + 0.4 * 2 * PH / 3
+    np.testing.assert_allclose(line.p[0], expected, rtol=1e-12)

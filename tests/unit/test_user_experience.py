@@ -11,7 +11,7 @@ import pytest
 import camcontact as cc
 from camcontact.cli import main
 from camcontact.errors import InputError
-from camcontact.report import unit_label
+from camcontact.report import unexplained_values, unit_label
 from camcontact.scene_file import load_scene
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -25,10 +25,17 @@ def contact():
 
 @pytest.mark.parametrize("unit, label", [
     ("N*m", "N·m"), ("W/(m*K)", "W/(m·K)"), ("J/(kg*K)", "J/(kg·K)"), ("mm^2/s", "mm²/s"), ("m**3", "m³"),
-    ("um", "µm"), ("degC", "°C"), ("", "-"), ("Mrev", "Mrev"), ("W s^0.5/(m^2 K)", "W·s⁰·⁵/(m²·K)"), ("1/GPa", "1/GPa"),
+    ("um", "µm"), ("degC", "°C"), ("", "-"), ("Mrev", "Mrev"), ("W s^0.5/(m^2 K)", "W·s^0.5/(m²·K)"), ("1/GPa", "1/GPa"),
+    ("W / (m*K)", "W/(m·K)"), ("mm ** 2", "mm²"), ("micron", "µm"), ("dimensionless", "-"), ("kg m^-3", "kg·m⁻³"),
 ])
 def test_unit_labels_keep_the_order_engineers_write(unit, label):
     assert unit_label(unit) == label
+
+
+def test_unit_labels_read_back_as_their_units():
+    """A column label is a unit pint reads again (report_export.to_pint_frame does): the same quantity."""
+    for unit in ("W / (m*K)", "mm ** 2", "W s^0.5/(m^2 K)", "kg m^-3", "N*m", "micron", "degC"):
+        assert cc.Q_(1.0, unit_label(unit)).to(unit).magnitude == pytest.approx(1.0)
 
 
 def test_unknown_unit_is_named():
@@ -63,7 +70,9 @@ def test_the_bearing_lives_are_shown_in_millions_of_revolutions():
     result = cc.Analysis(scene, outputs=["L10", "L10h"]).run()
     frame = result.summary_frame()  # per roller: to_frame(); the bearing's scalars: summary_frame()
     assert frame.loc[0, "L10 [Mrev]"] == pytest.approx(result["L10"] / 1e6, rel=1e-12)
-    assert result.quantity("L10").to("").magnitude == pytest.approx(result["L10"], rel=1e-12)
+    assert result.quantity("L10").to("rev_count").magnitude == pytest.approx(result["L10"], rel=1e-12)
+    with pytest.raises(InputError, match="L10 \\[revolution_count\\] in unit = 'revolution'"):
+        result.quantity("L10", "revolution")  # an angle (2 pi rad), not a count: refused, not off by 2 pi
 
 
 def test_results_components_and_analyses_show_their_values():
@@ -131,13 +140,16 @@ def test_cli_quiet_and_verbose(tmp_path, capsys):
     assert main(["run", "-q", "--csv", str(csv)]) == 0
     captured = capsys.readouterr()
     assert captured.out == "" and csv.stat().st_size > 0
+    logger = logging.getLogger("camcontact")
+    before = (logger.level, list(logger.handlers))
     try:
         assert main(["-v", "run", "--csv", str(tmp_path / "loud.csv")]) == 0
         err = capsys.readouterr().err
         assert "camcontact: step kinematics (roller follower" in err and "camcontact: step normal_force ran in" in err
-    finally:  # the CLI's handler points at this test's captured stderr: remove it
+        assert (logger.level, list(logger.handlers)) == before  # main() leaves the logger as it found it
+    finally:
         _configure_logging(0)
-        logging.getLogger("camcontact").setLevel(logging.NOTSET)
+        logger.setLevel(before[0])
     assert main(["run", "-v", "-q"]) == 2
     assert "-v and -q: choose one" in capsys.readouterr().err
 
@@ -168,6 +180,14 @@ def test_cam_plot_is_a_grid_of_every_panel_and_draws_on_the_callers_axes(tmp_pat
         result.plot(panels=("film",), ax=axes)
     with pytest.raises(InputError, match="give ax= or fig=, not both"):
         result.plot(panels=("film",), ax=axes[0], fig=own)
+    with pytest.raises(InputError, match="fig= already has 1 axes"):
+        result.plot(panels=("film",), fig=own)  # a second call would stack its panels on the first's
+    with pytest.raises(InputError, match="figsize= with fig="):
+        result.plot(panels=("film",), fig=plt.figure(), figsize=(4, 3))
+    left, right = plt.figure().subfigures(1, 2)
+    result.plot(panels=("film",), fig=left)
+    result.plot(panels=("lambda",), fig=right)
+    assert [ax.get_title() for ax in left.figure.axes] == ["film over the cycle", "film parameter"]
     plt.close("all")
 
 
@@ -235,8 +255,10 @@ def test_gridded_sweeps_become_labelled_arrays_with_numeric_angles_and_summaries
     ds = cc.to_xarray(frame)
     assert dict(ds.sizes) == {"speed": 2, "follower.roller_radius": 2, "cam_angle": 360}
     assert ds["h_min"].attrs["units"] == "µm" and ds["speed"].attrs["units"] == "rpm"
-    fast = float(ds["h_min_cycle"].sel(speed=3000.0, **{"follower.roller_radius": 15.0}).isel(cam_angle=0))
-    slow = float(ds["h_min_cycle"].sel(speed=1000.0, **{"follower.roller_radius": 15.0}).isel(cam_angle=0))
+    # the summary does not vary along the cam angle: kept without it, one number per case
+    assert ds["h_min_cycle"].dims == ("speed", "follower.roller_radius") and ds["h_min"].dims[-1] == "cam_angle"
+    fast = float(ds["h_min_cycle"].sel(speed=3000.0, **{"follower.roller_radius": 15.0}))
+    slow = float(ds["h_min_cycle"].sel(speed=1000.0, **{"follower.roller_radius": 15.0}))
     assert fast > slow
     read_back = frame.copy()
     read_back.attrs = {}  # as read_sweep gives it from a CSV file: the dimensions are named by hand
@@ -248,3 +270,29 @@ def test_gridded_sweeps_become_labelled_arrays_with_numeric_angles_and_summaries
     cvt = load_scene(ROOT / "tutorials" / "forti_ball_cone_cvt.toml").component
     angles = cc.sweep_frame(cvt, {"cvt.cone_angle": ["25 deg", "30 deg"]}, outputs=["efficiency"], progress=False)
     assert angles["cvt.cone_angle [deg]"].tolist() == [25.0, 30.0]
+    raceway = load_scene(ROOT / "tutorials" / "pellet_mill_raceway_contact.toml").component
+    slip = cc.sweep_frame(raceway, {"slide_roll_ratio": ["5 %", "10 %"]}, outputs=["h_min"], progress=False)
+    assert slip["slide_roll_ratio [%]"].tolist() == [5.0, 10.0] and slip["error"].eq("").all()
+
+
+def test_xarray_of_a_cam_study_keeps_failures_and_summaries_without_the_angle():
+    pytest.importorskip("xarray")
+    follower = load_scene().component
+    # the default report of two film models, one of which (grubin) gives no h_min: NaN with its reason
+    frame = cc.Analysis(follower, models={"film": ["pan_hamrock", "grubin"]}).sweep(
+        {"speed": ["1000 rpm", "0 rpm", "3000 rpm"]}, progress=False)
+    assert unexplained_values(frame) == []  # the summary's not_given joined to the per-angle rows'
+    assert frame.loc[frame["variant"] == "grubin", "not_given"].str.contains("h_min_cycle").all()
+    ds = cc.to_xarray(frame)
+    assert set(ds.dims) == {"speed", "variant", "cam_angle"} and ds["h_min_cycle"].dims == ("speed", "variant")
+    assert float(ds["h_min_cycle"].sel(speed=3000.0, variant="pan_hamrock")) > 0
+    assert len(ds.attrs["failed_cases"]) == 1 and ds.attrs["failed_cases"][0].startswith("case 1: ")
+
+
+def test_quiet_sweep_still_says_which_cases_failed(tmp_path, capsys):
+    text = (ROOT / "tutorials" / "forti_ball_cone_cvt.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "swept.toml"
+    scene.write_text(text + '\n[sweep]\nratio = [1.0, 3.0]\n', encoding="utf-8")  # 3:1 needs a tilt beyond 30 deg
+    assert main(["sweep", str(scene), "-q", "--csv", str(tmp_path / "swept.csv")]) == 0
+    captured = capsys.readouterr()
+    assert captured.out == "" and "camcontact: warning: 1 of 2 cases failed" in captured.err
