@@ -269,6 +269,8 @@ def _sweep(args: argparse.Namespace) -> int:
         if importlib.util.find_spec("pyarrow") is None:
             raise InputError("--parquet needs pyarrow: install the extra, pip install 'camcontact[parquet]'")
         _check_output(Path(args.parquet), "--parquet")
+    if args.plot is not None:
+        _check_plot(Path(args.plot))
     count = math.prod(len(values) for values in scene.sweep.values())
     workers = sweeps.worker_count(args.workers, count) if args.workers else 0
     capped = (f"; --workers {args.workers} capped to {workers} ({os.cpu_count() or 1} CPUs, {count} cases)"
@@ -292,6 +294,11 @@ def _sweep(args: argparse.Namespace) -> int:
               f"with: {_sweep_resume_command(args, csv_path)}", file=sys.stderr)
         return EXIT_INTERRUPTED if frame.attrs["interrupted"] else EXIT_FAILURE
     failed = frame.loc[frame["failed"] if "failed" in frame else frame["error"] != "", "case"].nunique()
+    if args.plot is not None:
+        from .sweep_plot import plot_sweep
+
+        figure = plot_sweep(frame)
+        _write(Path(args.plot), "--plot", lambda path: figure.savefig(path, dpi=120))
     if args.quiet:
         if args.parquet:
             _write(Path(args.parquet), "--parquet", lambda path: write_parquet(frame, path))
@@ -307,6 +314,8 @@ def _sweep(args: argparse.Namespace) -> int:
     if args.parquet:
         _write(Path(args.parquet), "--parquet", lambda path: write_parquet(frame, path))
         print(f"Parquet written to {args.parquet}")
+    if args.plot is not None:
+        print(f"plot written to {args.plot}")
     return 0
 
 
@@ -476,6 +485,7 @@ def main(argv: list[str] | None = None) -> int:
     sweep.add_argument("--timeout", type=float, metavar="SECONDS",
                        help="a case still running after SECONDS is recorded as failed (CaseTimeout); the sweep goes on")
     sweep.add_argument("--parquet", help="also write the table as Parquet at the end (needs the [parquet] extra)")
+    sweep.add_argument("--plot", metavar="PNG", help="also save a plot of the outputs against the first swept value")
     sweep.add_argument("--table", choices=("auto", "cases", "index"), default="auto",
                        help="rows per case, or per case and cam angle/roller (default: auto)")
     sweep.add_argument("--no-progress", action="store_true", help="no progress bar")

@@ -296,3 +296,33 @@ def test_quiet_sweep_still_says_which_cases_failed(tmp_path, capsys):
     assert main(["sweep", str(scene), "-q", "--csv", str(tmp_path / "swept.csv")]) == 0
     captured = capsys.readouterr()
     assert captured.out == "" and "camcontact: warning: 1 of 2 cases failed" in captured.err
+
+
+def test_sweep_plot_draws_each_output_against_the_first_swept_value(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from camcontact.sweep_plot import plot_sweep
+
+    png = tmp_path / "study.png"
+    assert main(["sweep", str(ROOT / "tutorials" / "ls1_speed_sweep.toml"), "--csv", str(tmp_path / "s.csv"),
+                 "--plot", str(png), "--no-progress"]) == 0
+    assert png.stat().st_size > 0 and f"plot written to {png}" in capsys.readouterr().out
+    frame = cc.Analysis(load_scene().component, outputs=["h_min", "h_min_cycle", "p_h_max"]).sweep(
+        {"speed": ["1000 rpm", "2000 rpm"], "follower.roller_radius": ["12 mm", "15 mm"]}, progress=False)
+    figure = plot_sweep(frame)
+    # per-angle table: plotted by its cases' summaries; one line per roller radius, two points each
+    titles = [ax.get_title() for ax in figure.axes]
+    assert titles == ["h_min_cycle", "p_h_max"]  # h_min varies along the cam angle: not a case's value
+    lines = figure.axes[0].get_lines()
+    assert len(lines) == 2 and all(len(line.get_xdata()) == 2 for line in lines)
+    assert [t.get_text() for t in figure.axes[0].get_legend().get_texts()] == [
+        "follower.roller_radius 12 mm", "follower.roller_radius 15 mm"]
+    with pytest.raises(InputError, match="x = 'load' is not a column"):
+        plot_sweep(frame, x="load")
+    with pytest.raises(InputError, match="numeric output columns"):
+        plot_sweep(frame, outputs=["jump"])
+    plt.close("all")
