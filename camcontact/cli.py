@@ -32,7 +32,7 @@ import os
 import sys
 import traceback
 import warnings
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -343,13 +343,8 @@ def _plugins(args: argparse.Namespace) -> int:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         rows = registry.entries(args.family)
-    width = {key: max([len(key)] + [len(str(getattr(r, key))) for r in rows]) for key in ("name", "family", "source", "status")}
-    header = "  ".join(k.ljust(width[k]) for k in ("name", "family", "source", "status")) + "  reference"
-    print(header)
-    print("-" * len(header))
-    for row in rows:
-        cells = "  ".join(str(getattr(row, k)).ljust(width[k]) for k in ("name", "family", "source", "status"))
-        print(f"{cells}  {row.reference}")
+    keys = ("name", "family", "source", "status", "reference")
+    print(_left_aligned(keys, [[getattr(row, k) for k in keys] for row in rows], rule=True))
     for warning in caught:
         print(f"warning: {warning.message}", file=sys.stderr)
     return 0
@@ -371,19 +366,21 @@ def _outputs(args: argparse.Namespace) -> int:
     ready = table["available"]
     print(f"{_printable(scene.name)}: {int(ready.sum())} outputs (default: {int((ready & table['default']).sum())}); "
           "ask for any with outputs = [...] in the scene file or Analysis(outputs=[...])")
-    print(_left_aligned(shown[ready]))
+    print(_left_aligned(shown.columns, shown[ready].itertuples(index=False)))
     if not ready.all():
         print(f"\nneed more input ({int((~ready).sum())}):")
-        print(_left_aligned(table.loc[~ready, ["output", "missing"]]))
+        print(_left_aligned(("output", "missing"), table.loc[~ready, ["output", "missing"]].itertuples(index=False)))
     return 0
 
 
-def _left_aligned(frame: Any) -> str:
-    """A DataFrame of text as left-aligned columns (pandas right-aligns them)."""
-    width = {c: max([len(str(c))] + [len(str(v)) for v in frame[c]]) for c in frame.columns}
-    lines = ["  ".join(str(c).ljust(width[c]) for c in frame.columns).rstrip()]
-    lines += ["  ".join(str(v).ljust(width[c]) for c, v in zip(frame.columns, row)).rstrip()
-              for row in frame.itertuples(index=False)]
+def _left_aligned(header: Sequence[str], rows: Iterable[Sequence[Any]], *, rule: bool = False) -> str:
+    """Rows of text as left-aligned columns under ``header`` (pandas right-aligns them), a line of dashes under
+    the header with ``rule``; no trailing spaces."""
+    rows = [[str(v) for v in row] for row in rows]
+    width = [max([len(str(h))] + [len(row[k]) for row in rows]) for k, h in enumerate(header)]
+    head = "  ".join(str(h).ljust(w) for h, w in zip(header, width)).rstrip()
+    lines = [head, *(["-" * len(head)] if rule else [])]
+    lines += ["  ".join(v.ljust(w) for v, w in zip(row, width)).rstrip() for row in rows]
     return "\n".join(lines)
 
 

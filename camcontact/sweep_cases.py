@@ -179,17 +179,16 @@ def _with_summaries(rows: Any, summary: Any) -> Any:
     ``not_given`` of both are joined (a variant without a summary says so beside its NaN)."""
     scalars = [c for c in summary.columns if c not in rows.columns and c not in ("variant", "failed", "error",
                                                                                   "not_given")]
-    variants = rows["variant"] if "variant" in rows else None
-    index = (list(summary["variant"]).index(v) for v in variants) if variants is not None else None
-    if "not_given" in summary:
-        extra = list(summary["not_given"])
-        own = list(rows["not_given"]) if "not_given" in rows else [""] * len(rows)
-        positions = list(index) if index is not None else [0] * len(rows)
-        rows = rows.assign(not_given=[", ".join(part for part in (mine, extra[k]) if part)
-                                      for mine, k in zip(own, positions)])
+    variants = "variant" in rows
+    if "not_given" in summary:  # per variant (None: the one variant of a result without labels)
+        extra = dict(zip(summary["variant"] if variants else [None], summary["not_given"]))
+        own = rows["not_given"] if "not_given" in rows else [""] * len(rows)
+        keys = rows["variant"] if variants else [None] * len(rows)
+        rows = rows.assign(not_given=[", ".join(part for part in (mine, extra[key]) if part)
+                                      for mine, key in zip(own, keys)])
     if not scalars:
         return rows
-    if variants is not None and "variant" in summary:
+    if variants:
         return rows.merge(summary[["variant", *scalars]], on="variant", how="left", sort=False)
     return rows.assign(**{c: summary[c].iloc[0] for c in scalars})
 
@@ -586,22 +585,19 @@ def run_sweep(runner: Any, scene: Any, grid: Any, *, outputs=None, models=None, 
         frame = tidy_table(pd.DataFrame([row for n in sorted(collected) for row in collected[n]]))
     if frame.empty and "case" not in frame:
         frame = _empty_table(columns)
-    frame.attrs["dimensions"] = _dimensions(frame, [header for header, _ in columns], table)
-    frame.attrs["index"] = frame.attrs["dimensions"][-1] if table == "index" and len(frame.attrs["dimensions"]) > len(
-        columns) + ("variant" in frame.columns) else None
+    frame.attrs["dimensions"], frame.attrs["index"] = _dimensions(frame, [header for header, _ in columns], table)
     _report_missing(frame, len(cases), stop, path)
     return frame
 
 
-def _dimensions(frame: Any, parameters: list[str], table: str) -> list[str]:
-    """The columns a full grid of this table is indexed by: the swept paths, the variant (several models in a
-    slot) and, for a per-index table, the index column (cam angle, roller) — the first after them."""
-    dims = list(parameters)
-    if "variant" in frame.columns:
-        dims.append("variant")
-    if table == "index":  # the index column comes first after them (absent when every case failed)
-        dims += [c for c in frame.columns if c not in ("case", "failed", "error", "not_given", *dims)][:1]
-    return dims
+def _dimensions(frame: Any, parameters: list[str], table: str) -> tuple[list[str], str | None]:
+    """The columns a full grid of this table is indexed by — the swept paths, the variant (several models in a
+    slot) and, for a per-index table, the index column (cam angle, roller), the first after them — and that
+    index column (None: a table per case, or one where every case failed)."""
+    dims = list(parameters) + (["variant"] if "variant" in frame.columns else [])
+    others = [c for c in frame.columns if c not in ("case", "failed", "error", "not_given", *dims)]
+    index = others[0] if table == "index" and others else None
+    return dims + ([index] if index else []), index
 
 
 def has_index(analysis: Any) -> bool:

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from .errors import InputError
+from .report_export import split_header
 from .scenes.plot_layout import panel_axes
 
 __all__ = ["plot_sweep"]
@@ -25,9 +26,8 @@ def _setting(header: str, value: Any) -> str:
     """``"follower.roller_radius [mm]"``, 8.0 -> ``"follower.roller_radius 8 mm"``; text as it is."""
     if not isinstance(value, (int, float, np.number)):
         return str(value)
-    name, _, unit = header.partition(" [")
-    unit = unit.rstrip("]")
-    return f"{name} {value:g}" + (f" {unit}" if unit and unit != "-" else "")
+    name, unit = split_header(header)
+    return f"{name} {value:g}" + (f" {unit}" if unit else "")
 
 
 def plot_sweep(frame: Any, outputs: Sequence[str] | None = None, *, x: str | None = None, ax: Any = None,
@@ -67,7 +67,7 @@ def plot_sweep(frame: Any, outputs: Sequence[str] | None = None, *, x: str | Non
             label = ", ".join(_setting(name, value) for name, value in zip(others, key))
             part = part.sort_values(x)
             axis.plot(part[x], part[column], marker="o", ms=3, label=label or None)
-        axis.set(xlabel=x, ylabel=column, title=column.split(" [")[0])
+        axis.set(xlabel=x, ylabel=column, title=split_header(column)[0])
         if others:
             axis.legend(fontsize=7)
     return fig

@@ -11,21 +11,13 @@ Needs xarray (the ``[xarray]`` extra).
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 from typing import Any
 
 from .errors import InputError
+from .report_export import split_header
 
 __all__ = ["to_xarray"]
-
-_HEADER = re.compile(r"^(?P<name>.*?) \[(?P<unit>[^\]]*)\]$")
-
-
-def _name_and_unit(header: str) -> tuple[str, str | None]:
-    """``"speed [rpm]"`` -> ("speed", "rpm"); a header without a unit -> (header, None)."""
-    match = _HEADER.match(header)
-    return (match["name"], match["unit"]) if match else (header, None)
 
 
 def to_xarray(frame: Any, dims: Sequence[str] | None = None, index: str | None = None) -> Any:
@@ -80,11 +72,11 @@ def to_xarray(frame: Any, dims: Sequence[str] | None = None, index: str | None =
                 dataset[name] = first.drop_vars(index)
     renames, units = {}, {}
     for header in [*dataset.coords, *dataset.data_vars]:
-        name, unit = _name_and_unit(str(header))
+        name, unit = split_header(str(header))
         if name != header:
             renames[header] = name
         if unit is not None:
-            units[name] = unit
+            units[name] = unit or "-"  # split_header reads a plain number's "-" as no unit
     dataset = dataset.rename(renames)
     for name, unit in units.items():
         dataset[name].attrs["units"] = unit

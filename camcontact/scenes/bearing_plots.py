@@ -5,13 +5,11 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError
-from .plot_layout import panel_axes
+from .plot_layout import lambda_bands, panel_axes
 
 __all__ = ["plot_bearing"]
 
 
-#: the film parameter's bands: boundary below 1, mixed to 3, full film above (as the cam plot's)
-LAMBDA_BANDS = ((0.0, 1.0, "tab:red", "boundary"), (1.0, 3.0, "tab:orange", "mixed"))
 #: (output key, scale to the axis unit, axis label, title) of the per-contact panels
 CONTACT_PANELS = {"pressure": ("p_h", 1e-6, "p_h [MPa]", "Hertz pressure per contact"),
                   "film": ("h_min", 1e6, "h_min [µm]", "minimum film per contact"),
@@ -59,8 +57,7 @@ def plot_bearing(result, *, panels=("load", "pressure", "film", "lambda"), figsi
                 top = max(top, float(np.nanmax(values, initial=0.0)))
                 ax.plot(degrees[mask][order], values, marker=style, ms=3, label=f"{race}, row {int(k)}")
         if panel == "lambda":
-            for low, high, colour, name in LAMBDA_BANDS:
-                ax.axhspan(low, high, color=colour, alpha=0.12, label=name)
+            lambda_bands(ax)
             ax.set_ylim(0.0, max(3.0, 1.1 * top))
         ax.set(xlabel="azimuth [deg] (0: load line)", ylabel=label, title=title)
         ax.legend(fontsize=7)

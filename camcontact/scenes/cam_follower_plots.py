@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import InputError
-from .plot_layout import panel_axes
+from .plot_layout import lambda_bands, panel_axes
 
 __all__ = ["plot_cam_follower"]
 
@@ -20,8 +20,6 @@ PANELS = {
     "friction": ("friction_force",),
     "stribeck": ("friction_coefficient", "Lambda_min"),
 }
-#: Lambda bands: boundary below 1, mixed between 1 and 3, full film above 3 (Hamrock, Schmid & Jacobson 2004)
-LAMBDA_BANDS = ((0.0, 1.0, "tab:red", "boundary"), (1.0, 3.0, "tab:orange", "mixed"))
 
 
 def _lambda_panel(ax, result, degrees) -> None:
@@ -30,8 +28,7 @@ def _lambda_panel(ax, result, degrees) -> None:
         values = np.asarray(row["Lambda_min"], dtype=float)
         top = max(top, float(np.nanmax(values)) * 1.05)
         ax.plot(degrees, values, label=f"Λ_min {label}".strip())
-    for low, high, colour, name in LAMBDA_BANDS:
-        ax.axhspan(low, high, color=colour, alpha=0.12, label=name)
+    lambda_bands(ax)
     ax.set(xlabel="cam angle [deg]", ylabel="Λ = h_min / σ [-]", title="film parameter", ylim=(0.0, top))
     ax.legend(fontsize=8)
 
@@ -46,8 +43,7 @@ def _stribeck_panel(ax, result) -> None:
         for regime in dict.fromkeys(regimes):
             chosen = regimes == regime
             ax.plot(lam[chosen], mu[chosen], ".", label=f"{regime or 'angles'} {label}".strip())
-    for low, high, colour, _ in LAMBDA_BANDS:
-        ax.axvspan(low, high, color=colour, alpha=0.12)
+    lambda_bands(ax, vertical=True, labelled=False)
     ax.set(xlabel="Λ [-]", ylabel="friction coefficient [-]", title="Stribeck view of the turn")
     ax.legend(fontsize=8)
 

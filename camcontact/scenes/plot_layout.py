@@ -10,10 +10,19 @@ from typing import Any
 
 from ..errors import InputError
 
-__all__ = ["panel_axes"]
+__all__ = ["LAMBDA_BANDS", "lambda_bands", "panel_axes"]
 
 #: width and height of one panel [in]
 PANEL_SIZE = (4.6, 3.6)
+#: Lambda bands: boundary below 1, mixed between 1 and 3, full film above 3 (Hamrock, Schmid & Jacobson 2004)
+LAMBDA_BANDS = ((0.0, 1.0, "tab:red", "boundary"), (1.0, 3.0, "tab:orange", "mixed"))
+
+
+def lambda_bands(ax: Any, *, vertical: bool = False, labelled: bool = True) -> None:
+    """Shade the Lambda regime bands on ``ax``: across the y axis (Lambda on y), or along x (``vertical``)."""
+    span = ax.axvspan if vertical else ax.axhspan
+    for low, high, colour, name in LAMBDA_BANDS:
+        span(low, high, color=colour, alpha=0.12, **({"label": name} if labelled else {}))
 
 
 def panel_axes(count: int, *, ax: Any = None, fig: Any = None, figsize: tuple[float, float] | None = None,
