@@ -502,13 +502,17 @@ def main(argv: list[str] | None = None) -> int:
         command.add_argument("-v", "--verbose", action="count", default=argparse.SUPPRESS,
                              help="log each step as it runs on stderr (-vv: debug)")
         command.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
-                             help="print nothing but errors")
+                             help="print nothing but errors and failed cases" if command in (run, sweep) else
+                             "not for this command: it only prints (refused)")
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version, or a usage error (its line is printed)
         return exc.code if isinstance(exc.code, int) else EXIT_INPUT * (exc.code is not None)
     if args.verbose and args.quiet:
         _error("-v and -q: choose one")
+        return EXIT_INPUT
+    if args.quiet and args.command not in ("run", "sweep"):
+        _error(f"-q with {args.command}: it prints its list and nothing else; -q is for run and sweep")
         return EXIT_INPUT
     import logging
 

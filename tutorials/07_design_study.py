@@ -35,7 +35,8 @@ print(study.to_string(index=False, float_format=lambda v: f"{v:.4g}"))
 
 # %% [markdown]
 # A larger roller spreads the load (lower pressure, thicker film); speed thickens the film but eats
-# the jump margin (inertia ~ speed²). The feasible region is where all three limits hold.
+# the jump margin (inertia ~ speed²). The feasible region is where all three limits hold: its designs are
+# the white dots, the infeasible side is hatched.
 
 # %%
 def grid(frame, column, rows, cols):
@@ -48,14 +49,21 @@ film = grid(study, "h_min_cycle [µm]", rows, cols) * 1e-6 / sigma
 pressure = grid(study, "p_h_max [MPa]", rows, cols)
 margin = grid(study, "jump_margin [N]", rows, cols)
 feasible = (film >= 1.5) & (pressure <= 1000.0) & (margin > 100.0)
-fig, axes = plt.subplots(1, 3, figsize=(14, 4))
-for ax, (values, label) in zip(axes, ((film, "Lambda = h_min / sigma"), (pressure, "peak p_h [MPa]"),
+fig, axes = plt.subplots(1, 3, figsize=(14, 4.4), layout="constrained")
+for ax, (values, label) in zip(axes, ((film, "Lambda = h_min / sigma [-]"), (pressure, "peak p_h [MPa]"),
                                       (margin, "jump margin [N]"))):
     contour = ax.contourf(X, Y, values, levels=12)
-    fig.colorbar(contour, ax=ax)
-    ax.contour(X, Y, feasible.astype(float), levels=[0.5], colors="w", linewidths=2)
-    ax.set(xlabel="cam speed [rpm]", ylabel="roller radius [mm]", title=label + "\n(white: feasible boundary)")
-fig.tight_layout()
+    fig.colorbar(contour, ax=ax, label=label)
+    if feasible.any() and not feasible.all():  # the boundary, and the infeasible side hatched
+        ax.contour(X, Y, feasible.astype(float), levels=[0.5], colors="w", linewidths=2)
+    ax.contourf(X, Y, feasible.astype(float), levels=[-0.5, 0.5], colors="none", hatches=["//"])
+    ax.plot(X[feasible], Y[feasible], "o", mfc="w", mec="k", ms=5)
+    ax.set(xlabel="cam speed [rpm]", ylabel="roller radius [mm]", title=label)
+fig.legend(handles=[plt.Line2D([], [], color="w", marker="o", mec="k", ls="", label="feasible design"),
+                    plt.Line2D([], [], color="k", lw=2, label="feasible boundary (white)"),
+                    plt.matplotlib.patches.Patch(facecolor="none", edgecolor="k", hatch="//",
+                                                 label="infeasible: Lambda < 1.5, p_h > 1 GPa or jump margin < 100 N")],
+           loc="outside lower center", ncol=3, fontsize=8)
 fig.savefig("design_study_roller.png", dpi=80)
 print("feasible designs (roller radius [mm] x speed [rpm]):")
 print(np.where(feasible, "ok", "--"))

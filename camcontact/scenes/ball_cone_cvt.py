@@ -33,6 +33,9 @@ A :class:`~camcontact.components.LoadedBallConeCVT` becomes the steps
     contact's central film; or ``"fastsim"`` — Kalker's dry creep theory with the Coulomb bound
     Ct p (Saccheto's method; its slip share of the area; ``Fastsim(pressure="hertz")`` is the
     thesis's reading);
+``traction_curve`` (only when asked for: ``traction_curve_in``/``_out`` or the plot's ``"traction"`` panel)
+    each contact's traction coefficient |F_x|/N against its creepage, with its spin and without, the
+    operating point and the capacity on it (:mod:`camcontact.steps.traction_curve`);
 ``losses``
     the drive's contact power loss n (P_in + P_out) and efficiency 1 - loss/power;
 ``stresses``
@@ -74,6 +77,7 @@ from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import ball_cone_slice_stresses
 from ..steps.ehl_friction import BALL_CONE_MIXED_OUTPUTS, ball_cone_mixed, ehl_friction_inputs, fluid_traction_model
 from ..steps.traction import ball_cone_efficiency, ball_cone_ehl_traction, ball_cone_traction
+from ..steps.traction_curve import ball_cone_ehl_traction_curve, ball_cone_traction_curve
 from .ball_cone_cvt_plots import plot_ball_cone_cvt
 
 __all__ = ["SIDES", "ball_cone_cvt_inputs", "build_ball_cone_cvt"]
@@ -196,6 +200,11 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
                                     where="ball_cone_cvt scene: ", contact="the ball-cone contact")
     traction = chosen["traction_model"]
     ehl = isinstance(traction, EhlTraction)
+    # what the EHL traction (and its curve) read beside the contact: the numerical film's pressure, the
+    # surfaces' effusivity for a thermal fluid, the mixed step's shares
+    ehl_optional = ("pressure_field_in", "pressure_field_out", "numerical_pressure") + (
+        () if "thermal" in effects else ("effusivity",))
+    ehl_extra = (("effusivity",) if "thermal" in effects else ()) + (MIXED_TRACTION_READS if "mixed" in effects else ())
     steps = [
         Step.of(ball_cone_motion), Step.of(ball_cone_contact_forces), Step.of(ball_cone_hertz),
         lubricant_step(scene.cvt.lubricant, scene.si.temperature),
@@ -205,11 +214,9 @@ def build_ball_cone_cvt(scene: LoadedBallConeCVT, *, models: Mapping[str, Any],
                                                                 "sigma2": "sigma", "Lambda": f"Lambda_{side}"})
           for side in SIDES),
         *([Step.of(ball_cone_mixed)] if "mixed" in effects else []),
-        (Step.of(ball_cone_ehl_traction, optional=("pressure_field_in", "pressure_field_out", "numerical_pressure")
-                 + (() if "thermal" in effects else ("effusivity",)),
-                 extra=(("effusivity",) if "thermal" in effects else ())
-                 + (MIXED_TRACTION_READS if "mixed" in effects else ()))
-         if ehl else Step.of(ball_cone_traction)),
+        *((Step.of(function, optional=ehl_optional, extra=ehl_extra)
+           for function in (ball_cone_ehl_traction, ball_cone_ehl_traction_curve)) if ehl
+          else (Step.of(ball_cone_traction), Step.of(ball_cone_traction_curve))),
         Step.of(ball_cone_efficiency), Step.of(ball_cone_slice_stresses), Step.of(ball_cone_life),
     ]
     inputs = {**ball_cone_cvt_inputs(scene, effects), **chosen, "film_model": film_model,

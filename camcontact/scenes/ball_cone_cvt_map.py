@@ -27,6 +27,7 @@ import numpy as np
 from ..components.ball_cone_cvt import LoadedBallConeCVT
 from ..errors import InputError, ValidityWarning
 from ..sweep_cases import evolve_path
+from .plot_layout import panel_axes
 
 __all__ = ["MAP_OUTPUTS", "cvt_map", "plot_cvt_map"]
 
@@ -121,11 +122,14 @@ def _grid_of(frame, column: str, ratios: np.ndarray, powers: np.ndarray) -> np.n
     return table.reindex(index=powers, columns=ratios).to_numpy(dtype=float)
 
 
-def plot_cvt_map(frame, *, figsize: tuple[float, float] | None = None):
+def plot_cvt_map(frame, *, figsize: tuple[float, float] | None = None, ax: Any = None, fig: Any = None):
     """Efficiency (left) and traction margin (right) of a :func:`cvt_map` over ratio (x) and power (y, log
     when the powers span more than a decade), one row per ball diameter: filled contours with labelled
-    lines, the margin's zero line (gross-slip boundary, bold), gross-slip points ``x``, points above the
-    contact-stress limit circled. Returns the Figure."""
+    lines; on both panels the margin's zero line (the gross-slip boundary, bold) with the side where the
+    drive cannot transmit the power hatched (the feasible side is the clear one), gross-slip points ``x``
+    and points above the contact-stress limit hatched the other way. On new axes (``figsize`` [in]), the
+    caller's (``ax=``: two per ball diameter, row by row) or the caller's figure (``fig=``). Returns the
+    Figure."""
     import matplotlib.pyplot as plt
     from matplotlib.patches import Patch
     from matplotlib.ticker import FuncFormatter, MaxNLocator
@@ -140,31 +144,38 @@ def plot_cvt_map(frame, *, figsize: tuple[float, float] | None = None):
         raise InputError(f"plot_cvt_map: {ratios.size} ratio(s) x {powers.size} power(s); a map needs at least "
                          "two of each")
     balls = np.unique(frame[BALL].to_numpy(dtype=float)) if BALL in frame.columns else np.array([np.nan])
-    figsize = figsize or (11.0, 4.2 * balls.size)
-    fig, axes = plt.subplots(balls.size, 2, figsize=figsize, squeeze=False)
+    fig, axes = panel_axes(2 * balls.size, ax=ax, fig=fig, columns=2, where="plot_cvt_map",
+                           figsize=figsize or (None if ax is not None or fig is not None else (11.0, 4.2 * balls.size)))
     R, W = np.meshgrid(ratios, powers)
     plain = FuncFormatter(lambda value, _: f"{value:g}")
-    for row, ball in zip(axes, balls):
+    for row, ball in zip(np.reshape(axes, (balls.size, 2)), balls):
         part = frame if np.isnan(ball) else frame[frame[BALL] == ball]
         slip = _grid_of(part, "gross_slip", ratios, powers) > 0.5
         over = _grid_of(part, "stress_limit_exceeded", ratios, powers)
+        margin = 100.0 * _grid_of(part, "traction_margin [-]", ratios, powers)
         for ax, column, title, cmap in ((row[0], "efficiency [-]", "drive efficiency", "viridis"),
                                         (row[1], "traction_margin [-]", "traction margin 1 - F_t/capacity",
                                          "RdYlGn")):
             values = 100.0 * _grid_of(part, column, ratios, powers)
             finite = values[np.isfinite(values)]
-            if finite.size == 0:
-                ax.text(0.5, 0.5, f"no finite {column}", transform=ax.transAxes, ha="center")
-                continue
-            levels = MaxNLocator(nbins=10).tick_values(finite.min(), finite.max())
-            filled = ax.contourf(R, W, values, levels=levels, cmap=cmap, extend="both")
-            lines = ax.contour(R, W, values, levels=levels[::2], colors="k", linewidths=0.5)
-            ax.clabel(lines, fmt="%g", fontsize=7)
-            fig.colorbar(filled, ax=ax, label=f"{title} [%]")
+            if finite.size:
+                levels = MaxNLocator(nbins=10).tick_values(finite.min(), finite.max())
+                filled = ax.contourf(R, W, values, levels=levels, cmap=cmap, extend="both")
+                lines = ax.contour(R, W, values, levels=levels[::2], colors="k", linewidths=0.5)
+                ax.clabel(lines, fmt="%g", fontsize=7)
+                ax.figure.colorbar(filled, ax=ax, label=f"{title} [%]")
+            else:  # e.g. no efficiency anywhere: the drive slips at every point
+                ax.text(0.5, 0.5, f"no finite {column}", transform=ax.transAxes, ha="center",
+                        bbox={"facecolor": "w", "edgecolor": "none"})
             handles = []
-            if column == "traction_margin [-]" and finite.min() < 0.0 < finite.max():
-                ax.contour(R, W, values, levels=[0.0], colors="k", linewidths=2.0)
-                handles.append(plt.Line2D([], [], color="k", lw=2.0, label="margin 0 (gross-slip boundary)"))
+            if np.nanmin(margin, initial=np.inf) < 0.0:  # the side that cannot transmit the power
+                ax.contourf(R, W, np.nan_to_num(margin, nan=-1.0), levels=[-np.inf, 0.0], colors="none",
+                            hatches=["\\\\"])
+                handles.append(Patch(facecolor="none", edgecolor="k", hatch="\\\\",
+                                     label="margin < 0: gross slip (infeasible)"))
+                if np.nanmax(margin, initial=-np.inf) > 0.0:
+                    ax.contour(R, W, margin, levels=[0.0], colors="k", linewidths=2.0)
+                    handles.append(plt.Line2D([], [], color="k", lw=2.0, label="margin 0 (gross-slip boundary)"))
             if np.nanmax(over, initial=0.0) > 0.5:
                 ax.contourf(R, W, np.nan_to_num(over), levels=[0.5, 1.5], colors="none", hatches=["///"])
                 handles.append(Patch(facecolor="none", edgecolor="k", hatch="///", label="p_h above stress limit"))
@@ -180,5 +191,4 @@ def plot_cvt_map(frame, *, figsize: tuple[float, float] | None = None):
             ax.set(xlabel="ratio [-]", ylabel="power [W]", title=f"{title} [%]{where}")
             if handles:
                 ax.legend(handles=handles, fontsize=7, loc="lower right", framealpha=0.85)
-    fig.tight_layout()
     return fig

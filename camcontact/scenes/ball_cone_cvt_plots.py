@@ -1,6 +1,6 @@
 """Plots of a ball-cone CVT result: maps of the traction over both contacts (FASTSIM: stick and slip; EHL:
-the film's shear stress, where the limiting shear bounds it and the slip pole of the spin), the contact
-losses and efficiency, lives per track."""
+the film's shear stress, where the limiting shear bounds it and the slip pole of the spin), the traction
+curves with the operating points, the contact losses and efficiency, lives per track."""
 
 from __future__ import annotations
 
@@ -97,6 +97,46 @@ def _ehl_map(ax, row, side, result):
                  f"creepage {100 * abs(row[f'creepage_{side}']):.2f} %, margin {100 * row[f'traction_margin_{side}']:.0f} %")
 
 
+def _traction_curves(ax, result):
+    """Traction coefficient |F_x|/N against creepage of the first variant's input (thick) and output (thin)
+    contact, with their spin (solid) and without (dashed), the coefficient the power needs (dotted) and the
+    operating point on each curve (or a cross at the curve's end for gross slip)."""
+    import matplotlib.pyplot as plt
+    from matplotlib.ticker import FuncFormatter
+
+    from ..analysis import Analysis
+
+    names = [f"traction_curve_{side}" for side in ("in", "out")]
+    row = result.rows[0]
+    if not all(name in row for name in names):  # the curves are computed only when asked for
+        models = result.variant_models[0] if result.variant_models else {}
+        row = Analysis(result.scene, outputs=names, models=models, effects=result.effects).run().rows[0]
+    handles = []
+    for side, colour, width in (("in", "tab:blue", 3.0), ("out", "tab:orange", 1.3)):
+        curve = row[f"traction_curve_{side}"]
+        x = 100.0 * curve.creepage[1:]  # log axis: from the first creepage > 0
+        spin = f", spin {curve.spin:.3g} 1/m" if curve.spin else ""
+        handles += ax.plot(x, curve.coefficient[1:], color=colour, lw=width, label=f"{side}put contact{spin}")
+        if curve.coefficient_no_spin is not None:
+            ax.plot(x, curve.coefficient_no_spin[1:], "--", color=colour, lw=width / 2)
+        ax.axhline(curve.operating_coefficient, color=colour, ls=":", lw=width / 2)
+        if curve.gross_slip:
+            handles += ax.plot(x[-1], curve.coefficient[-1], "X", color="crimson", ms=9, zorder=5,
+                               label=f"{side}put: gross slip, needs {curve.operating_coefficient:.3g}")
+        else:
+            handles += ax.plot(100.0 * curve.operating_creepage, curve.operating_coefficient, "o", color=colour,
+                               mec="k", zorder=5, label=f"{side}put operating point, {curve.operating_coefficient:.3g}")
+    if curve.coefficient_no_spin is not None:
+        handles.append(plt.Line2D([], [], color="grey", ls="--", lw=1.0, label="without spin"))
+    handles.append(plt.Line2D([], [], color="grey", ls=":", lw=1.0, label="needed |F_t|/N"))
+    ax.set_xscale("log")
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
+    ax.set_ylim(bottom=0.0)
+    ax.set(xlabel="creepage |ν_x| [%]", ylabel="traction coefficient |F_x|/N [-]",
+           title=f"traction curves\n{curve.model}")
+    ax.legend(handles=handles, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
+
+
 LOSSES = ("creep_loss_in", "spin_loss_in", "creep_loss_out", "spin_loss_out", "efficiency")
 
 
@@ -115,10 +155,12 @@ def _losses(ax, result):
     ax.legend(fontsize=8, loc="upper center")
 
 
-def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsize=None, ax=None, fig=None, columns=2):
+def plot_ball_cone_cvt(result, *, panels=("in", "out", "traction", "losses", "life"), figsize=None, ax=None, fig=None,
+                       columns=3):
     """Panels ``"in"``/``"out"``: the traction map of the first variant's input and output contact (FASTSIM:
     stick/slip elements and traction arrows; EHL traction: the film's shear stress, evaluated again for the
-    map); ``"losses"``: creep and spin loss per contact and the drive's
+    map); ``"traction"``: the first variant's traction curves (:mod:`camcontact.steps.traction_curve`,
+    computed again when the result has none) with the operating points; ``"losses"``: creep and spin loss per contact and the drive's
     efficiency, per variant; ``"life"``: L10 [h] per track and of the system, per variant (log scale). In a grid
     of ``columns`` per row, or on the caller's axes (``ax=``, one per panel) or figure (``fig=``)."""
     from matplotlib.ticker import LogFormatter
@@ -126,7 +168,7 @@ def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsiz
     contact_needs = ("a_rolling", "a_transverse", "normal_force")
     need = {side: contact_needs + tuple(f"{q}_{side}" for q in ("creepage", "spin", "traction_regime",
                                                                  "traction_margin"))
-            for side in ("in", "out")} | {"life": TRACKS, "losses": LOSSES}
+            for side in ("in", "out")} | {"life": TRACKS, "losses": LOSSES, "traction": ()}
     chosen = [p for p in panels if all(k in result.outputs for k in need[p])]
     if not chosen:
         raise InputError(f"nothing to plot: the panels {list(panels)} need the outputs {need}")
@@ -140,13 +182,16 @@ def plot_ball_cone_cvt(result, *, panels=("in", "out", "losses", "life"), figsiz
                 _ehl_map(ax, row, panel, result)
         elif panel == "losses":
             _losses(ax, result)
+        elif panel == "traction":
+            _traction_curves(ax, result)
         else:
             labels = [v or "result" for v in result.variants]
             width = 0.8 / len(labels)
             for k, (label, row) in enumerate(zip(labels, result.rows)):
                 ax.bar(np.arange(len(TRACKS)) + k * width, [row[t] / SECONDS_PER_HOUR for t in TRACKS], width=width,
                        label=label)
-            ax.set_xticks(np.arange(len(TRACKS)) + 0.4 - width / 2, [t.replace("life_", "") for t in TRACKS])
+            ax.set_xticks(np.arange(len(TRACKS)) + 0.4 - width / 2, [t.replace("life_", "") for t in TRACKS],
+                          rotation=20)
             ax.set_yscale("log")
             ax.yaxis.set_major_formatter(LogFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.5)))
             ax.yaxis.set_minor_formatter(LogFormatter(labelOnlyBase=False, minor_thresholds=(2, 0.5)))

@@ -23,7 +23,7 @@ from ..errors import InputError
 from ..step_graph import step
 
 __all__ = ["CONTACT_TRACTION", "EHL_TRACTION", "FASTSIM_TRACTION", "ball_cone_ehl_traction", "ball_cone_efficiency",
-           "ball_cone_traction", "transmitted_traction"]
+           "ball_cone_traction", "ehl_contact", "ehl_model_label", "transmitted_traction"]
 
 SIDES = ("in", "out")
 #: per-contact outputs both traction models give (with the suffix _in / _out)
@@ -77,10 +77,34 @@ def ball_cone_traction(traction_model, a_rolling, a_transverse, normal_force, tr
     return out
 
 
+def ehl_contact(side: str, traction_model, fluid_model, a_rolling: float, a_transverse: float, p_h: float, h_c: float,
+                rolling_speed: float, lubricant_state, inputs: dict):
+    """The :class:`~camcontact.contact.spin_traction.SpinTractionContact` of one CVT contact (``side`` "in" or
+    "out") as the EHL traction step solves it: on its central film h_c [m] (with ``mixed``: the film at the
+    fluid's share, the asperities' share and the lubricant's ``boundary_friction`` from ``inputs``), on the
+    numerical pressure field where ``inputs`` has one; an InputError for a film that is not > 0."""
+    mixed = {}
+    if f"asperity_load_fraction_{side}" in inputs:
+        h_c = inputs[f"h_c_mixed_{side}"]
+        mixed = {"asperity_load_fraction": inputs[f"asperity_load_fraction_{side}"],
+                 "boundary_friction": inputs["boundary_friction"]}
+    if not h_c > 0.0:  # a film model that failed (a numerical film that closed)
+        raise InputError(f"traction step: the {side}put contact's central film h_c = {h_c!r} m; the EHL traction "
+                         "needs a film > 0 (a numerical film that did not converge: finer levels, or a film "
+                         "formula)")
+    return traction_model.contact(a_rolling, a_transverse, p_h, h_c, rolling_speed, lubricant_state,
+                                  inputs.get("effusivity"), fluid=fluid_model,
+                                  field=inputs.get(f"pressure_field_{side}"), **mixed)
+
+
+def ehl_model_label(fluid_model, numerical_pressure) -> str:
+    """The EHL traction's model label in the step records: the fluid, thermal, numerical pressure."""
+    return (f"ehl_traction ({fluid_model.name}{', thermal' if fluid_model.thermal else ''}"
+            f"{', numerical pressure' if numerical_pressure else ''})")
+
+
 @step("traction", provides=EHL_TRACTION,
-      model=lambda fluid_model, numerical_pressure: f"ehl_traction ({fluid_model.name}"
-                                                    f"{', thermal' if fluid_model.thermal else ''}"
-                                                    f"{', numerical pressure' if numerical_pressure else ''})")
+      model=ehl_model_label)
 def ball_cone_ehl_traction(traction_model, fluid_model, a_rolling, a_transverse, p_h, h_c_in, h_c_out,
                            tangential_force_in, tangential_force_out, spin_in, spin_out, spin, rolling_speed_in,
                            rolling_speed_out, lubricant_state, **inputs):
@@ -96,21 +120,11 @@ def ball_cone_ehl_traction(traction_model, fluid_model, a_rolling, a_transverse,
     ``asperity_load_fraction_in``/``_out`` and ``h_c_mixed_in``/``_out`` of the mixed step and the lubricant's
     ``boundary_friction`` — the film carries its share on its own film, the asperities the rest with
     Coulomb friction along the local sliding (:meth:`~camcontact.models.traction_spin.EhlTraction.contact`)."""
-    effusivity = inputs.get("effusivity")
     out = {}
     for side, force, phi, speed, h in (("in", tangential_force_in, spin_in, rolling_speed_in, h_c_in),
                                        ("out", tangential_force_out, spin_out, rolling_speed_out, h_c_out)):
-        mixed = {}
-        if f"asperity_load_fraction_{side}" in inputs:
-            h = inputs[f"h_c_mixed_{side}"]
-            mixed = {"asperity_load_fraction": inputs[f"asperity_load_fraction_{side}"],
-                     "boundary_friction": inputs["boundary_friction"]}
-        if not h > 0.0:  # a film model that failed (a numerical film that closed)
-            raise InputError(f"traction step: the {side}put contact's central film h_c = {h!r} m; the EHL traction "
-                             "needs a film > 0 (a numerical film that did not converge: finer levels, or a film "
-                             "formula)")
-        contact = traction_model.contact(a_rolling, a_transverse, p_h, h, speed, lubricant_state, effusivity,
-                                         fluid=fluid_model, field=inputs.get(f"pressure_field_{side}"), **mixed)
+        contact = ehl_contact(side, traction_model, fluid_model, a_rolling, a_transverse, p_h, h, speed,
+                              lubricant_state, inputs)
         solution = traction_model.solve(force, phi if spin else 0.0, contact)
         state = solution.pop("state")
         solution["surface_traction"], solution["traction_map"] = contact.centre_line(state), contact.traction_map(state)

@@ -90,6 +90,18 @@ def test_power_quantity_array_and_plot(tmp_path):
     figure = plot_cvt_map(thesis)
     labels = [t.get_text() for t in figure.axes[1].get_legend().get_texts()]  # the margin panel
     assert "gross slip" in labels and "p_h above stress limit" in labels
+    # the side that cannot transmit the power is hatched on both panels (the feasible side is the clear one)
+    for panel in figure.axes[:2]:
+        assert "margin < 0: gross slip (infeasible)" in [t.get_text() for t in panel.get_legend().get_texts()]
+    # on the caller's axes (two per ball diameter) or figure; a wrong count of axes is named
+    import matplotlib.pyplot as plt
+
+    mine, axes = plt.subplots(1, 2, figsize=(10, 4), layout="constrained")
+    assert plot_cvt_map(thesis, ax=axes) is mine and axes[1].get_title().startswith("traction margin")
+    with pytest.raises(InputError, match="ax= gives 1 axes for 2 panels"):
+        plot_cvt_map(thesis, ax=axes[0])
+    assert len(plot_cvt_map(thesis, fig=plt.figure(figsize=(10, 4))).axes) == 3  # no efficiency: one colour bar
+    plt.close("all")
     with pytest.raises(InputError, match="a map needs at least two"):
         plot_cvt_map(thesis[thesis["ratio [-]"] == 1.0])
     with pytest.raises(InputError, match="lacks"):

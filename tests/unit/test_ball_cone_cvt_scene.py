@@ -127,7 +127,8 @@ def test_plot(tmp_path):
 
     matplotlib.use("Agg")
     figure = cc.Analysis(point(power="50 W"), models=FASTSIM).run().plot()
-    assert len(figure.axes) == 4
+    assert len(figure.axes) == 5 and figure.axes[2].get_title() == "traction curves\nfastsim (parabolic)"
+    assert figure.axes[2].get_xscale() == "log" and len(figure.axes[2].get_lines()) >= 6  # 2 x (spin, none, needed)
     figure.savefig(tmp_path / "cvt.png")
     # the EHL traction (default) and FASTSIM side by side: losses and lives of both variants
     both = cc.Analysis(point(), models={"traction": ["ehl_traction", "fastsim"]}).run()

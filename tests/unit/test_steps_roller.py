@@ -80,7 +80,6 @@ def test_twin_and_kernel_agree():
 
 def test_scarce_traction_slips_and_caps_the_force():
     u_cam, N = _drive(0.5)
-    pin = pin_friction_torque(N, 0.0025, 0.004)
     limit = 0.002  # mu N = 4 N, below the ~ 27 N the roller needs
     out = coulomb_traction_table(N, u_cam, limit)
     assert_provides(coulomb_traction_table, out)

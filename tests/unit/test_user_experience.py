@@ -152,6 +152,11 @@ def test_cli_quiet_and_verbose(tmp_path, capsys):
         logger.setLevel(before[0])
     assert main(["run", "-v", "-q"]) == 2
     assert "-v and -q: choose one" in capsys.readouterr().err
+    # the listing commands only print: -q there is refused, not silently ignored
+    for argv in (["-q", "plugins"], ["outputs", "-q"], ["default-scene", "--quiet"]):
+        assert main(argv) == 2
+        captured = capsys.readouterr()
+        assert captured.out == "" and f"-q with {argv[-1] if argv[0] == '-q' else argv[0]}" in captured.err
 
 
 def test_cam_plot_is_a_grid_of_every_panel_and_draws_on_the_callers_axes(tmp_path):
