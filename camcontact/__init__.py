@@ -10,7 +10,7 @@ use of a model family) and compiles no numba kernel.
 from . import registry, step_graph
 from .analysis import Analysis, Result
 from .components import (BallConeCVT, Body, Cam, CamFollower, Follower, LineContact, LoadedBallConeCVT, LoadedBearing,
-                         Lubricant, Material, RacewayContact, SphericalRollerBearing, ValveTrain)
+                         Lubricant, Material, PointContact, RacewayContact, SphericalRollerBearing, ValveTrain)
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
 
@@ -63,6 +63,7 @@ __all__ = [
     "Material",
     "MotionProgram",
     "PluginLoadWarning",
+    "PointContact",
     "RacewayContact",
     "Segment",
     "SphericalRollerBearing",

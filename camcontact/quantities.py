@@ -298,11 +298,12 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("traction_sufficient", None, None, "True where both contacts need F_t/F_n below the traction coefficient"),
         _q("a_rolling", "m", "um", "Hertz semi-axis along the rolling direction"),
         _q("a_transverse", "m", "um", "Hertz semi-axis across the rolling direction"),
+        _q("ellipticity", "", "", "Hamrock's ellipticity k = a_transverse/a_rolling of a point contact"),
         _q("Rx", "m", "mm", "reduced radius along the rolling direction"),
         _q("Ry", "m", "mm", "reduced radius across the rolling direction"),
         _q("pressure_check", None, None, "peak pressure against the thesis's 1.1 GPa EHL threshold"),
         _q("stress_limit_exceeded", None, None,
-           "True where the Hertz peak pressure exceeds BallConeCVT.contact_stress_limit (default ISO 76: 4.2 GPa)"),
+           "True where the Hertz peak pressure exceeds the component's contact_stress_limit (default ISO 76: 4.2 GPa)"),
         _q("life_system", "s", "h", "L10 of the CVT's rolling contacts (Weibull combination)"),
         # single roller-raceway contact (Delabenetta 2021 chain, scenes.raceway_contact)
         _q("E_star", "Pa", "GPa", "E* = E'/2 (Johnson; Delabenetta Eq. 3)"),

@@ -31,7 +31,9 @@ reported with the keys that are allowed. Layout::
     [contact.lubricant]               # Lubricant fields
     nu40 = "575 cSt"
 
-A ``cam_follower`` scene's [contact] table holds :class:`~camcontact.components.CamFollower`
+A ``point_contact`` scene's [contact] holds :class:`~camcontact.components.PointContact` fields with
+[contact.body1] / [contact.body2] (each with ``radius`` along and ``transverse_radius`` across rolling) and
+[contact.lubricant]. A ``cam_follower`` scene's [contact] table holds :class:`~camcontact.components.CamFollower`
 fields, with nested [contact.cam] (its ``program`` a table of ``segments``), [contact.follower],
 [contact.valve_train] and [contact.lubricant] tables. A ``raceway_contact`` scene's [contact] holds
 :class:`~camcontact.components.RacewayContact` fields with [contact.raceway_material],
@@ -68,6 +70,7 @@ from .components import (
     LoadedBearing,
     Lubricant,
     Material,
+    PointContact,
     RacewayContact,
     SphericalRollerBearing,
     ValveTrain,
@@ -104,10 +107,11 @@ def _motion_program(table: Any, where: str) -> Any:
 
 #: scene kind -> component class of the [contact] table (the scene component)
 _KINDS = {"line_contact": LineContact, "cam_follower": CamFollower, "raceway_contact": RacewayContact,
-          "bearing": LoadedBearing, "ball_cone_cvt": LoadedBallConeCVT}
+          "bearing": LoadedBearing, "ball_cone_cvt": LoadedBallConeCVT, "point_contact": PointContact}
 #: nested tables: component class -> {field: component class, or a builder(table, where)}
 _NESTED: dict[type, dict[str, Any]] = {
     LineContact: {"body1": Body, "body2": Body, "lubricant": Lubricant},
+    PointContact: {"body1": Body, "body2": Body, "lubricant": Lubricant},
     Body: {"material": Material},
     CamFollower: {"cam": Cam, "follower": Follower, "valve_train": ValveTrain, "lubricant": Lubricant},
     Cam: {"material": Material, "program": _motion_program},

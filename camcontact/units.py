@@ -62,8 +62,9 @@ pint.set_application_registry(ureg)
 #: pint's ``revolution``, an angle of 2 pi rad (a factor 2 pi off); shown in millions (``Mrev``)
 ureg.define("revolution_count = [revolution_count] = rev_count")
 ureg.define("million_revolutions = 1e6 * revolution_count = Mrev")
+#: pint Quantity class of the camcontact unit registry (``Q_(15, "mm")``)
 Q_ = ureg.Quantity
-#: type of the Quantity fields of components
+#: pint's Quantity class (``pint.Quantity``): the type of the Quantity fields of components
 Quantity = pint.Quantity
 
 #: An example unit per dimensionality, used in error messages.

@@ -218,11 +218,11 @@ print(pd.DataFrame({"F_r [kN]": loads / 1e3,
 
 import matplotlib.pyplot as plt  # noqa: E402  (the plot extra)
 
-fig, ax = plt.subplots(figsize=(6, 4))
+fig, ax = plt.subplots(figsize=(6, 4), layout="constrained")  # constrained: no label clipped at the edges
 ax.loglog(loads / 1e3, curves["NH1 11-572"][:, 0], "k--", label="L10h (both greases)")
 for label, values in curves.items():
     ax.loglog(loads / 1e3, values[:, 1], label=f"L_nmh, {label}")
-ax.axvline(radial / 1e3, color="grey", lw=0.8)
+ax.axvline(radial / 1e3, color="grey", lw=0.8, label=f"the mill's load, {radial / 1e3:.0f} kN")
 ax.set(xlabel="radial load F_r [kN]", ylabel="life [h]", title="24040 CC/W33 at 300 rpm, 85 °C (assumed C, P_u, e_C)")
 ax.legend(fontsize=8)
 fig.savefig("pellet_mill_life.png", dpi=80)

@@ -7,8 +7,9 @@ from .line_contact import Body, LineContact
 from .loaded_bearing import LoadedBearing
 from .lubricant import Lubricant, LubricantState
 from .material import Material
+from .point_contact import PointContact
 from .raceway_contact import RacewayContact
 from .spherical_roller_bearing import SphericalRollerBearing
 
 __all__ = ["BallConeCVT", "Body", "Cam", "CamFollower", "Follower", "LineContact", "LoadedBallConeCVT", "LoadedBearing",
-           "Lubricant", "LubricantState", "Material", "RacewayContact", "SphericalRollerBearing", "ValveTrain"]
+           "Lubricant", "LubricantState", "Material", "PointContact", "RacewayContact", "SphericalRollerBearing", "ValveTrain"]

@@ -129,7 +129,7 @@ class Follower(Component):
 
     @classmethod
     def roller(cls, *, radius, material: Material, offset="0 mm", **kwargs) -> Follower:
-        """An offset roller follower of roller radius ``radius``."""
+        """An offset roller follower of roller radius ``radius`` and offset ``offset`` [length] (Quantity or str)."""
         return cls(kind="roller", roller_radius=radius, offset=offset, material=material, **kwargs)
 
     def roller_inertia_si(self, cam_width: float) -> float:

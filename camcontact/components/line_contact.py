@@ -7,8 +7,8 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import (Component, Quantity, above_absolute_zero, boolean, in_range, instance_of, non_negative,
-                     number_field, positive, quantity_field, text)
+from ..units import (Component, Quantity, above_absolute_zero, boolean, format_quantity, in_range, instance_of,
+                     non_negative, number_field, positive, quantity_field, text)
 from .lubricant import Lubricant
 from .material import Material
 
@@ -31,6 +31,12 @@ class Body(Component):
         Surface speed in the rolling direction [velocity] (sign gives the direction).
     roughness : Quantity or str, optional
         RMS roughness Rq [length] (>= 0), needed for Lambda.
+    transverse_radius : Quantity or str, optional
+        Radius of curvature across the rolling direction [length] (> 0), for a :class:`PointContact`
+        (a ball: its radius; a raceway groove: the groove radius with ``transverse_concave``); None: straight
+        across (a cylinder or a flat). A line contact refuses it.
+    transverse_concave : bool
+        True for a surface concave across the rolling direction (a raceway groove).
     name : str
     """
 
@@ -40,10 +46,15 @@ class Body(Component):
     concave: bool = attrs.field(default=False, validator=boolean)
     speed: Quantity = quantity_field("[velocity]", default="0 m/s")
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
+    transverse_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    transverse_concave: bool = attrs.field(default=False, validator=boolean)
 
     def __attrs_post_init__(self) -> None:
         if self.concave and self.radius is None:
             raise InputError(f"Body {self.name!r}: concave=True needs a radius (a flat surface is neither)")
+        if self.transverse_concave and self.transverse_radius is None:
+            raise InputError(f"Body {self.name!r}: transverse_concave=True needs a transverse_radius (a surface "
+                             "straight across is neither)")
 
     @property
     def signed_radius(self) -> float:
@@ -51,6 +62,13 @@ class Body(Component):
         if self.radius is None:
             return math.inf
         return -self.si.radius if self.concave else self.si.radius
+
+    @property
+    def signed_transverse_radius(self) -> float:
+        """Radius across the rolling direction [m], negative when concave, inf when straight across."""
+        if self.transverse_radius is None:
+            return math.inf
+        return -self.si.transverse_radius if self.transverse_concave else self.si.transverse_radius
 
 
 @attrs.frozen(kw_only=True)
@@ -105,6 +123,11 @@ class LineContact(Component):
             raise InputError(f"{where}: give load (with length) or load_per_length, not both")
         if self.body1.radius is None and self.body2.radius is None:
             raise InputError(f"{where}: both bodies are flat; a line contact needs at least one curved body")
+        for body in (self.body1, self.body2):
+            if body.transverse_radius is not None:
+                raise InputError(f"{where}: Body {body.name!r}.transverse_radius = "
+                                 f"{format_quantity(body.transverse_radius)}; a line contact is straight across (allowed: None; "
+                                 "a body curved both ways makes a PointContact)")
 
     @property
     def w(self) -> float:

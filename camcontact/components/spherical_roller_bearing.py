@@ -157,13 +157,14 @@ class SphericalRollerBearing(Component):
 
     @property
     def stiffness(self) -> float:
-        """K_n [N/m^(10/9)] of one roller, inner and outer contact in series (Palmgren)."""
+        """K_n [N/m^(10/9)] of one roller, inner and outer contact in series (Palmgren 1959)."""
         from ..contact.load_distribution import line_contact_stiffness
 
         return line_contact_stiffness(self.si.roller_length)
 
     @property
     def roller_count(self) -> int:
+        """Total number of rollers, rows x rollers per row [-]."""
         return self.rows * self.rollers_per_row
 
     # ------------------------------------------------------------------ analysis helpers

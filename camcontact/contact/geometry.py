@@ -25,7 +25,8 @@ def reduced_modulus(E1: float, nu1: float, E2: float, nu2: float) -> float:
 
     .. math:: \\frac{2}{E'} = \\frac{1 - \\nu_1^2}{E_1} + \\frac{1 - \\nu_2^2}{E_2}
 
-    References: Hamrock, Schmid & Jacobson (2004) Eq. 17.x; Tsuha (2015) Eq. 4.14.
+    References: Tsuha (2015) Eq. 4.14; Hamrock, Schmid & Jacobson (2004) *Fundamentals of Fluid Film
+    Lubrication*, 2nd ed., ch. 17 (the effective elastic modulus).
     """
     return 2.0 / ((1.0 - nu1**2) / E1 + (1.0 - nu2**2) / E2)
 

@@ -15,8 +15,9 @@ forms are offered by :func:`line_approach`:
   for any E' by Tsuha (2015) Eq. 4.19: delta = 3.81 [2/(pi E')]^0.9 F^0.9 / l^0.8 [m];
 * ``"hamrock"`` — elastic approach of a cylinder pair in reduced form,
   delta = (2w/(pi E')) [ln(2 pi E' R / w) - 1] = (2w/(pi E')) [2 ln(4R/b) - 1]
-  (the Johnson-type logarithmic line-contact approach with the reduced radius and modulus,
-  as implemented e.g. in the slippy package's Hertz line contact).
+  (the maximum elastic deformation of a rectangular conjunction in the reduced radius and
+  modulus: Hamrock, Schmid & Jacobson (2004) *Fundamentals of Fluid Film Lubrication*, 2nd ed.,
+  ch. 17; the equation number is not checked against the print here).
 """
 
 from __future__ import annotations

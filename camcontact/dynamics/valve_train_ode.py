@@ -62,8 +62,8 @@ every integration segment is a smooth linear ODE with a constant Jacobian.
 
 References
 ----------
-Ferrarese, A., Uehara, S. Modelos de atrito e desgaste no sistema came–seguidor
-(friction and wear models in the cam–follower system), Escola Politécnica da USP.
+Ferrarese, A., Uehara, S. (n.d.: the copy used prints no year) Modelos de atrito e desgaste no sistema
+came–seguidor (friction and wear models in the cam–follower system), Escola Politécnica da USP.
 §2 and Fig. 1 (models), Tables 1 and 2 (parameters), Fig. 4 (N at 3000 rpm).
 """
 

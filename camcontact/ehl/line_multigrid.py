@@ -165,17 +165,20 @@ class LineHierarchy:
 
     # ------------------------------------------------------------------ operator pieces
     def film(self, level: _Level, P: np.ndarray, H0: float) -> np.ndarray:
+        """Film H [-] on ``level`` for pressures P and H0: H0 + X^2/2 - (1/pi) (deformation), or rigid."""
         if not self.problem.elastic:
             return H0 + level.parabola
         return H0 + level.parabola - level.deform(P) / math.pi
 
     def residual(self, level: _Level, P: np.ndarray, H: np.ndarray) -> np.ndarray:
+        """Reynolds operator L_i(P, H) [-] at the interior nodes of ``level`` (boundary entries 0)."""
         out = np.empty(level.n)
         self.kernel("reynolds_residual")(P, H, level.h, self.lam, self.viscosity_code, self.density_code,
                                          self.params, self.s, self.c_t, out)
         return out
 
     def load(self, level: _Level, P: np.ndarray) -> float:
+        """Load-balance error [-]: trapezoidal integral of P dX minus pi/2."""
         return float(level.h * (P.sum() - 0.5 * (P[0] + P[-1])) - 0.5 * math.pi)
 
     def freeze_dry(self, P: np.ndarray) -> None:
@@ -190,6 +193,8 @@ class LineHierarchy:
     # ------------------------------------------------------------------ transfers
     @staticmethod
     def prolong_cubic(c: np.ndarray) -> np.ndarray:
+        """Coarse values ``c`` interpolated to the next finer grid (2 n - 1 nodes): cubic inside,
+        linear at the two end intervals."""
         fine = np.empty(2 * c.size - 1)
         fine[0::2] = c
         fine[1::2] = 0.5 * (c[:-1] + c[1:])

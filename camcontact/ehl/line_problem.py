@@ -174,6 +174,7 @@ class LineEHLProblem:
         return self.alpha * self.p0 * ratio * (1.0 + P * ratio) ** (self.z - 1.0)
 
     def density_ratio(self, P):
+        """rho-bar = rho/rho_0 [-] at dimensionless pressure P (Dowson–Higginson, or 1 if incompressible)."""
         P = np.maximum(np.asarray(P, dtype=float), 0.0)
         if self.density == "incompressible":
             return np.ones_like(P)
@@ -181,6 +182,7 @@ class LineEHLProblem:
         return (DH_A + DH_B * p) / (DH_A + p)
 
     def ddensity_ratio(self, P):
+        """d rho-bar / dP [-] (0 if incompressible)."""
         P = np.maximum(np.asarray(P, dtype=float), 0.0)
         if self.density == "incompressible":
             return np.zeros_like(P)

@@ -18,7 +18,8 @@ class ConvergenceRecord:
 
     ``residuals`` are h-scaled mean absolute complementarity residuals of the Reynolds
     equation on the finest grid; ``load_errors`` the load-balance errors
-    h sum P - pi/2; ``work_units`` the cumulative work in finest-grid relaxation sweeps.
+    h sum P - pi/2; ``work_units`` the cumulative work in finest-grid relaxation sweeps;
+    ``wall_time`` the wall-clock time of the solve [s].
     """
 
     method: str
@@ -34,6 +35,7 @@ class ConvergenceRecord:
 
     @property
     def cycles(self) -> int:
+        """Number of cycles (or iterations) recorded [-]."""
         return len(self.residuals)
 
     def to_frame(self):
@@ -48,6 +50,7 @@ class ConvergenceRecord:
         })
 
     def summary(self) -> str:
+        """One line: method, verdict, cycles, last residual, grid and wall time (in ms)."""
         state = "converged" if self.converged else "NOT converged"
         last = f"{self.residuals[-1]:.3g}" if self.residuals else "n/a"
         return (f"{self.method}: {state} in {self.cycles} cycles, residual {last}, "
@@ -88,6 +91,7 @@ class LineEHLSolution:
 
     @property
     def P_max(self) -> float:
+        """Maximum pressure P_max = max P over the grid (p_max/p_h) [-]."""
         return float(self.P.max())
 
     @property

@@ -125,13 +125,21 @@ class TransientScaling:
 class TransientStep:
     """One solved instant: dimensional films and pressure, H0 (reference scaling), the record."""
 
+    #: instant [s]
     time: float
+    #: central film h(0) [m]
     h_c: float
+    #: minimum film [m]
     h_min: float
+    #: maximum pressure [Pa]
     p_max: float
+    #: film constant [-] in the reference scaling (H = h R_r/b_r^2)
     H0: float
+    #: convergence record of the instant
     record: ConvergenceRecord
+    #: P = p/p_r [-] on the reference grid (``keep_fields`` only, else None)
     P: np.ndarray = attrs.field(repr=False, eq=False, default=None)
+    #: H = h R_r/b_r^2 [-] on the reference grid (``keep_fields`` only, else None)
     H: np.ndarray = attrs.field(repr=False, eq=False, default=None)
 
 
@@ -142,7 +150,7 @@ class TransientLineResult:
     ``h_c``, ``h_min`` [m], ``p_max`` [Pa]; ``H0``, ``H_c``, ``H_min`` in the reference scaling
     (H = h R_r/b_r^2); ``converged`` per instant; ``records`` the convergence record of every
     instant (the first: the steady start); ``X`` the grid (x = X b_r) and, if asked for, ``P``
-    and ``H`` (one row per instant).
+    and ``H`` (one row per instant); ``wall_time`` the wall-clock time of the march [s].
     """
 
     times: np.ndarray
@@ -161,10 +169,12 @@ class TransientLineResult:
 
     @property
     def H_c(self) -> np.ndarray:
+        """Central film per instant in the reference scaling, h_c R_r/b_r^2 [-]."""
         return self.h_c / self.scaling.h_scale
 
     @property
     def H_min(self) -> np.ndarray:
+        """Minimum film per instant in the reference scaling, h_min R_r/b_r^2 [-]."""
         return self.h_min / self.scaling.h_scale
 
     def to_frame(self):
@@ -311,11 +321,13 @@ class TransientLineSolver:
         return sc.R / R, u_m / sc.u, 0.5 * math.pi * (w / sc.w - 1.0)
 
     def film(self, P: np.ndarray, H0: float, R: float) -> np.ndarray:
+        """Film H [-] (reference scaling) on the finest grid for P (p/p_r), H0 and the radius R [m]."""
         hierarchy = self._hierarchy(self.settings)
         hierarchy.curvature = self.scaling.R / R
         return hierarchy.film(hierarchy.levels[-1], P, H0)
 
     def density(self, P: np.ndarray) -> np.ndarray:
+        """Density ratio rho-bar [-] at P (p/p_r)."""
         return self.problem.density_ratio(P)
 
     # ------------------------------------------------------------------ starts
@@ -335,7 +347,8 @@ class TransientLineSolver:
         self.dt_previous = None
 
     def steady_start(self, time_: float, w: float, R: float, u_m: float) -> TransientStep:
-        """Start from the steady solution of the instant (needs u_m != 0).
+        """Start at ``time_`` [s] from the steady solution of the instant with load w [N/m], radius R [m]
+        and entrainment speed u_m [m/s] (needs u_m != 0).
 
         Solved with :func:`solve_multigrid` in the instant's own Hertz scaling (mirrored when
         u_m < 0), mapped onto the reference grid and converged there with the steady

@@ -53,6 +53,7 @@ class PointEHLSolution:
 
     @property
     def P_max(self) -> float:
+        """Maximum pressure P_max = max P over the grid (p_max/p_h) [-]."""
         return float(self.P.max())
 
     @property

@@ -331,6 +331,7 @@ class Palmgren(BearingFrictionModel):
 
     @property
     def factor_f0(self) -> float:
+        """f0 in use [-]: ``f0`` if given, else the middle of Palmgren's range for ``lubrication``."""
         return palmgren_default_f0(self.lubrication) if self.f0 is None else float(self.f0)
 
     def evaluate(self, radial_load, axial_load, speed, kinematic_viscosity, pitch_diameter,

@@ -108,6 +108,8 @@ class Grubin(LinePowerLaw):
 
     @property
     def terms(self):  # type: ignore[override]
+        """``{"h_c": (1.95, a, a, d)}``, the (c, a, b, d) of H_c = c U^a G^b W'^d with a = 8/11, d = -1/11 [-]
+        (rounded to ``exponent_digits`` if set)."""
         a, d = 8.0 / 11.0, -1.0 / 11.0
         if self.exponent_digits is not None:
             a, d = round(a, self.exponent_digits), round(d, self.exponent_digits)

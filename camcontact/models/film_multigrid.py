@@ -101,7 +101,8 @@ class Multigrid(FilmModel):
             raise InputError(f"film model 'multigrid': threads = {value!r}; allowed: None or an integer >= 1")
 
     def problem(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson"):
-        """The dimensionless :class:`~camcontact.ehl.line_problem.LineEHLProblem` of the contact."""
+        """The dimensionless :class:`~camcontact.ehl.line_problem.LineEHLProblem` of the contact: R [m],
+        w [N/m], E' [Pa], u_m [m/s], eta0 [Pa s], alpha [1/Pa]."""
         from ..ehl.line_problem import LineEHLProblem
 
         law = getattr(lubricant_state, "pressure_law", None)

@@ -6,6 +6,9 @@ name                formula                                        requires
 coulomb             F = mu N, P = F |u_s|                           normal_force, sliding_speed
 ferrarese_uehara    F = A_L eta0 V / h (Newtonian shear of the      normal_force, R, E_reduced, eta0,
                     EHL film; Ferrarese & Uehara Eqs. 1-9, 11)      angular_speed
+kelley              mu = 0.0127 log10[C F_n/(eta0 l abs(u1 - u2)   normal_force, contact_length, eta0,
+                    (u1 + u2)^2)] (Benedict & Kelley 1961;         u1, u2
+                    Delabenetta 2021 Eq. 49)
 =================== ============================================== =====================================
 
 All inputs are SI floats or arrays (e.g. over cam angles; they broadcast). Forces and powers
@@ -32,7 +35,7 @@ from .ferrarese_uehara_contact import (
     speed_inputs,
 )
 
-__all__ = ["Coulomb", "FerrareseUeharaFriction"]
+__all__ = ["Coulomb", "FerrareseUeharaFriction", "Kelley"]
 
 
 @builtin

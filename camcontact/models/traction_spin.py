@@ -106,6 +106,9 @@ class EhlTraction(TractionModel):
         """The contact prepared for many creepage states; ``fluid`` overrides :attr:`fluid`; ``field`` (a
         :class:`~camcontact.contact.spin_traction.PressureField`) puts it on a numerical pressure and film.
 
+        Inputs: Hertz semi-axes ``a_rolling``, ``b_lateral`` [m], ``p_h`` [Pa], central film ``h_c`` [m],
+        ``rolling_speed`` [m/s], the surfaces' ``effusivity`` [W s^0.5/(m^2 K)] (for a thermal fluid).
+
         Mixed lubrication: ``asperity_load_fraction`` f [-] of the Hertz load (p_h over the ellipse) is carried
         by the asperities at the uniform pressure f 2 p_h / 3 with the Coulomb coefficient ``boundary_friction``
         mu_b [-]; the film carries (1 - f) p_h with the Hertz shape on its film ``h_c`` (the film at the fluid's

@@ -21,7 +21,7 @@ from ..step_graph import step
 
 __all__ = [
     "APPROACHES", "EHL_PRESSURE", "RACES", "ball_cone_hertz", "cycle_hertz", "force_hertz", "hamrock_approach",
-    "line_geometry", "line_hertz", "palmgren_approach", "raceway_geometry", "roller_hertz",
+    "line_geometry", "line_hertz", "palmgren_approach", "point_geometry", "point_hertz", "raceway_geometry", "roller_hertz",
 ]
 
 #: the raceways of a bearing, in the order of the per-race outputs
@@ -41,7 +41,8 @@ def line_geometry(E1, nu1, E2, nu2, R1, R2):
       model=lambda concave: f"{'concave' if concave else 'convex'} raceway")
 def raceway_geometry(E1, nu1, E2, nu2, R1, R2, concave):
     """E', R of a roller on a raceway (``concave``: the outer raceway's curvature counts negative)
-    and Seabra's E* = E'/2, R_x = 2R (Delabenetta 2021 Eqs. 1, 3)."""
+    and Seabra's E* = E'/2, R_x = 2R (Delabenetta 2021 Eqs. 1, 3): moduli E1, E2 [Pa], Poisson's ratios
+    nu1, nu2 [-], radii R1, R2 [m] in; E_reduced, E_star [Pa], R, R_x [m] out."""
     E_reduced = reduced_modulus(E1, nu1, E2, nu2)
     R = reduced_radius(-R1 if concave else R1, R2)
     return {"E_reduced": E_reduced, "R": R, "E_star": 0.5 * E_reduced, "R_x": 2.0 * R}
@@ -132,3 +133,32 @@ def ball_cone_hertz(normal_force, E_reduced, ball_radius, cone_angle, cone_conta
                       "static rating of ball bearings, 4.2 GPa)", ValidityWarning, stacklevel=2)
     return {"Rx": Rx, "Ry": ball_radius, "a_rolling": contact.a_x, "a_transverse": contact.a_y, "p_h": contact.p_max,
             "approach": contact.approach, "pressure_check": check, "stress_limit_exceeded": exceeded}
+
+
+@step("geometry", provides=("E_reduced", "Rx", "Ry"))
+def point_geometry(E1, nu1, E2, nu2, R1x, R2x, R1y, R2y):
+    """Reduced modulus E' [Pa] and the gap's reduced radii Rx along and Ry across rolling [m] of two bodies
+    with moduli E1, E2 [Pa], Poisson's ratios nu1, nu2 [-] and signed principal radii [m] (negative
+    concave, ``inf`` straight): 1/Rx = 1/R1x + 1/R2x, 1/Ry = 1/R1y + 1/R2y."""
+    return {"E_reduced": reduced_modulus(E1, nu1, E2, nu2), "Rx": reduced_radius(R1x, R2x),
+            "Ry": reduced_radius(R1y, R2y)}
+
+
+@step("hertz", provides=("a_rolling", "a_transverse", "ellipticity", "p_h", "p_mean", "approach",
+                         "stress_limit_exceeded"),
+      model=lambda hertz_method: f"hertz_elliptical ({hertz_method})")
+def point_hertz(F, Rx, Ry, E_reduced, hertz_method, contact_stress_limit):
+    """Elliptical Hertz contact of a point contact (:func:`~camcontact.contact.hertz_elliptical.hertz_elliptical`)
+    under F [N] with reduced radii Rx (rolling), Ry [m] and E' [Pa]: semi-axes along and across rolling [m],
+    Hamrock's ellipticity k = a_transverse/a_rolling [-], peak and mean pressure [Pa], approach [m], and p_h
+    against ``contact_stress_limit`` [Pa] (``stress_limit_exceeded``, with a :class:`ValidityWarning` naming
+    the limit)."""
+    contact = hertz_elliptical(F, Rx, Ry, E_reduced, method=hertz_method)
+    exceeded = bool(contact.p_max > contact_stress_limit)
+    if exceeded:
+        warnings.warn(f"point contact: p_h = {contact.p_max * 1e-9:.3g} GPa exceeds the contact stress limit "
+                      f"{contact_stress_limit * 1e-9:.3g} GPa (PointContact.contact_stress_limit; default: ISO 76:2006, "
+                      "static rating of ball bearings, 4.2 GPa)", ValidityWarning, stacklevel=2)
+    return {"a_rolling": contact.a_x, "a_transverse": contact.a_y, "ellipticity": contact.ellipticity,
+            "p_h": contact.p_max, "p_mean": contact.p_mean, "approach": contact.approach,
+            "stress_limit_exceeded": exceeded}

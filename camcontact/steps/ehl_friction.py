@@ -2,11 +2,12 @@
 (``non_newtonian``, with the contact temperature of ``thermal``) and their sum, per cam angle.
 
 Mixed lubrication (:func:`camcontact.models.mixed_lubrication.mixed_line_contact`): Greenwood & Tripp's
-asperity pressure over the Hertz area and Johnson, Greenwood & Poon's load split, W = W/gamma1 (fluid) +
-W/gamma2 (asperities), the film at the fluid's share. Fluid traction (:mod:`camcontact.contact.fluid_traction`
-through a ``traction_models`` model, :mod:`camcontact.models.traction_fluid`): the shear stress of the central
-film integrated over the Hertz pressure. The friction of a contact (reference ``friction_traction_thermal.md``
-§2): F = mu_b W_asperity sign(u_s) + mu_fluid(u_s) W_fluid. Forces [N], speeds [m/s], films [m].
+(1970–71) asperity pressure over the Hertz area and Johnson, Greenwood & Poon's (1972, Wear 19:91–108) load
+split, W = W/gamma1 (fluid) + W/gamma2 (asperities), the film at the fluid's share. Fluid traction
+(:mod:`camcontact.contact.fluid_traction` through a ``traction_models`` model,
+:mod:`camcontact.models.traction_fluid`): the shear stress of the central film integrated over the Hertz
+pressure. The friction of a contact: F = mu_b W_asperity sign(u_s) + mu_fluid(u_s) W_fluid (Gelinck &
+Schipper 2000, Tribol. Int. 33:175–181). Forces [N], speeds [m/s], films [m], pressures [Pa], temperatures [K].
 """
 
 from __future__ import annotations

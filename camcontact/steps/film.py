@@ -32,7 +32,7 @@ from .contact import RACES
 
 __all__ = [
     "FILMS", "ball_cone_films", "bearing_lubrication", "check_thermal_data", "composite_roughness_step",
-    "ehl_groups", "film_parameter", "films_of", "inlet_thermal_correction", "isothermal_films", "line_film",
+    "ehl_groups", "film_parameter", "films_of", "inlet_thermal_correction", "isothermal_films", "line_film", "point_film",
     "lubrication_regime_step", "model_reads", "raceway_roughness", "resolve_film_model", "roller_films", "roller_thermal_films",
     "thermal_films",
 ]
@@ -125,8 +125,9 @@ def model_version(film_model) -> str:
 # ----------------------------------------------------------------------------- one line contact
 @step("ehl_groups", provides=("alpha_effective", "U", "G", "W", "M", "L"))
 def ehl_groups(w, R, E_reduced, u_m, eta0, alpha, piezoviscosity):
-    """Hamrock's U, G, W and Moes's M, L of a line contact; alpha_effective = alpha, or 0 without the
-    ``piezoviscosity`` effect. InputError when u_m = 0 (no steady film)."""
+    """Hamrock's U, G, W and Moes's M, L [-] of a line contact with w [N/m], R [m], E' [Pa], u_m [m/s],
+    eta0 [Pa s], alpha [1/Pa]; alpha_effective [1/Pa] = alpha, or 0 without the ``piezoviscosity`` effect.
+    InputError when u_m = 0 (no steady film)."""
     alpha = alpha if piezoviscosity else 0.0
     U, G, W = hamrock_line(w, R, E_reduced, u_m, eta0, alpha)
     if U == 0.0:
@@ -308,3 +309,27 @@ def ball_cone_films(film_model, Rx, Ry, normal_force, E_reduced, rolling_speed_i
         out[f"pressure_field_{side}"] = field
         out.update({f"{q}_{side}": float(produced[q]) for q in films_of(film_model)})
     return out
+
+
+# ----------------------------------------------------------------------------- one point contact
+@step("film", provides=("h_c_isothermal", "h_min_isothermal", "film_validity", "film_valid", "film_solution"),
+      model=model_name, version=model_version)
+def point_film(film_model, Rx, Ry, F, E_reduced, u_m, eta0, alpha, piezoviscosity, lubricant_state, density_law):
+    """The isothermal films [m] of a point contact by a point ``film_model`` (Hamrock–Dowson, Nijenbanning or
+    the numerical ``multigrid_point``) with reduced radii Rx, Ry [m], load F [N], E' [Pa], u_m [m/s],
+    eta0 [Pa s] and alpha [1/Pa] (0 without ``piezoviscosity``); the validity note ("ok", the model's range
+    warnings named by it, or the numerical solver's non-convergence), ``film_valid`` and the numerical
+    solution (``film_solution``, None for a formula). Only the films the model gives (the scene binds
+    the step to them)."""
+    produced = film_model({"Rx": Rx, "Ry": Ry, "F": F, "E_reduced": E_reduced, "u_m": u_m, "eta0": eta0,
+                           "alpha": alpha if piezoviscosity else 0.0, "lubricant_state": lubricant_state,
+                           "density_law": density_law})
+    messages = [f"{film_model.name}: {message}" for message in film_model.check_validity(dict(produced))]
+    record = produced.get("convergence")
+    if record is not None and not record.converged:
+        messages.append(f"numerical solution not converged: {record.message}")
+    result = {f"{q}_isothermal": float(produced[q]) for q in films_of(film_model)}
+    result["film_validity"] = "ok" if not messages else "; ".join(messages)
+    result["film_valid"] = not messages
+    result["film_solution"] = produced.get("ehl_solution")
+    return result

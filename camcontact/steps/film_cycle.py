@@ -42,9 +42,10 @@ FILM_OUTPUTS = (*FILMS, "film_regime", "film_valid", "film_solutions")
 
 @step("ehl_groups", provides=("alpha_effective", "U", "G", "W", "M", "L"))
 def cycle_ehl_groups(w, R, E_reduced, u_m, eta0, alpha, piezoviscosity, film_speed_factor):
-    """U, G, W, M, L at every angle for the film speed |u_m| x ``film_speed_factor`` (0.5 in the thesis
+    """U, G, W, M, L [-] at every angle for the film speed |u_m| x ``film_speed_factor`` (0.5 in the thesis
     convention, which feeds the films the mean speed where Moes uses the sum); M = inf where the
-    contact is loaded but nothing entrains, 0 where it is not loaded."""
+    contact is loaded but nothing entrains, 0 where it is not loaded. Inputs: arrays over the angles
+    w [N/m], R [m], u_m [m/s]; E' [Pa], eta0 [Pa s], alpha [1/Pa]; alpha_effective [1/Pa] out."""
     alpha = alpha if piezoviscosity else 0.0
     u = np.abs(u_m) * film_speed_factor
     n = u.size
@@ -159,8 +160,9 @@ def quasi_steady_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, 
 
 
 def steadiest_angle(w: np.ndarray, R: np.ndarray, u: np.ndarray) -> int:
-    """The angle whose neighbours differ least in w, R and u (the base circle of a cam): the transient
-    march starts there from the steady film, so its start is the periodic state."""
+    """Index of the angle whose neighbours differ least in w [N/m], R [m] and u [m/s] (arrays over the
+    angles; the base circle of a cam): the transient march starts there from the steady film, so its
+    start is the periodic state."""
     def change(a):
         scale = np.max(np.abs(a)) or 1.0
         return (np.abs(a - np.roll(a, 1)) + np.abs(np.roll(a, -1) - a)) / scale

@@ -94,7 +94,8 @@ def normal_force(contact_force, pressure_angle, convention):
 
 @step("jump", provides=("jump",))
 def jump_report(contact_open, contact_force, cam_angle):
-    """Whether the follower leaves the cam, where first, and the smallest contact force, as text."""
+    """Whether the follower leaves the cam, where first, and the smallest contact force, as text: from
+    ``contact_open`` (bool per angle), ``contact_force`` [N] and ``cam_angle`` [rad] (shown in degrees)."""
     if not np.any(contact_open):
         margin = float(np.min(contact_force))
         return {"jump": f"no jump (minimum contact force {margin:.4g} N)"}

@@ -53,18 +53,22 @@ class SlotModel:
 
     @property
     def kind(self) -> Any:
+        """The model class registered under ``spec`` in ``family`` (a string spec), or ``spec`` itself."""
         return registry.get_class(self.family, self.spec) if isinstance(self.spec, str) else self.spec
 
     @property
     def name(self) -> str:
+        """The model's registry name (``str(spec)`` if it has none)."""
         return getattr(self.kind, "name", str(self.spec))
 
     @property
     def version(self) -> str:
+        """The model's version ("" if it has none)."""
         return getattr(self.kind, "version", "")
 
     @property
     def parameters(self) -> dict[str, Any]:
+        """Keyword parameters for the model: the scene's ``coefficient`` for a scene-coefficient model, else none."""
         if isinstance(self.spec, str) and self.spec in self.SCENE_COEFFICIENT and self.coefficient is not None:
             return {"coefficient": self.coefficient}
         return {}

@@ -17,10 +17,11 @@ import numpy as np
 from ..contact.roughness import sinusoid_full_contact_pressure
 from ..contact.slice_stress import slice_extremum
 from ..contact.subsurface import line_subsurface
+from ..contact.subsurface_point import point_subsurface
 from ..step_graph import step
 
 __all__ = [
-    "THESIS_STRESS", "ball_cone_slice_stresses", "line_subsurface_stresses", "most_loaded_subsurface",
+    "THESIS_STRESS", "ball_cone_slice_stresses", "line_subsurface_stresses", "most_loaded_subsurface", "point_subsurface_stresses",
     "raceway_checks", "raceway_subsurface", "roughness_full_contact_pressure", "roughness_stress",
     "roughness_stress_step", "slice_through_centre",
 ]
@@ -35,7 +36,8 @@ THESIS_STRESS = {"tau_max": 0.30, "z_tau_max": 0.7861, "tau_oct": 0.27, "tau_xz"
 @step("subsurface", provides=LINE_SUBSURFACE, model="mcewen_line")
 def line_subsurface_stresses(b, p_h, nu1, friction_coefficient):
     """Extremes of the stress field below a line contact with surface friction (body 1):
-    in-plane principal shear, Tresca, von Mises, the orthogonal shear and its range 2 tau_0."""
+    in-plane principal shear, Tresca, von Mises, the orthogonal shear and its range 2 tau_0 [Pa], with
+    their positions [m]; from the half-width b [m], p_h [Pa], nu1 [-] and the friction coefficient [-]."""
     result = line_subsurface(b, p_h, friction=friction_coefficient, nu=nu1)
     return {
         "tau_max": result.principal_shear_max.value, "x_tau_max": result.principal_shear_max.x,
@@ -51,7 +53,8 @@ def line_subsurface_stresses(b, p_h, nu1, friction_coefficient):
                               "z_tau_xz_max", "tau_xz_range"), model=lambda convention: convention.stress)
 def raceway_subsurface(b, p_h, nu1, convention):
     """Frictionless subsurface stresses of the raceway contact: the thesis's constants (Eqs. 7, 9, 10,
-    ``convention.stress == "thesis_constants"``) or the extremes of the exact field."""
+    ``convention.stress == "thesis_constants"``) or the extremes of the exact field. From the half-width
+    b [m], p_h [Pa] and nu1 [-]; stresses [Pa], positions [m]."""
     if convention.stress == "thesis_constants":
         c = THESIS_STRESS
         # the thesis's Z_0 = 78.12 um is 0.42 x a with a rounded to whole micrometres (erratum 4)
@@ -70,8 +73,9 @@ def raceway_subsurface(b, p_h, nu1, convention):
 
 @step("subsurface", provides=("tau_max", "z_tau_max"), model="mcewen_line")
 def most_loaded_subsurface(Q, b_inner, b_outer, p_h_inner, p_h_outer, nu):
-    """Largest principal shear and its depth below the most loaded raceway contact of a bearing
-    (frictionless); zero when no roller is loaded."""
+    """Largest principal shear tau_max [Pa] and its depth z_tau_max [m] below the most loaded raceway
+    contact of a bearing (frictionless); zero when no roller is loaded. Inputs per roller: loads Q [N],
+    half-widths b_inner, b_outer [m], Hertz pressures p_h_inner, p_h_outer [Pa]; nu [-]."""
     if not np.any(Q > 0.0):
         return {"tau_max": 0.0, "z_tau_max": 0.0}
     b, p_h = {"inner": b_inner, "outer": b_outer}, {"inner": p_h_inner, "outer": p_h_outer}
@@ -108,7 +112,8 @@ def roughness_full_contact_pressure(roughness_amplitude, roughness_wavelength, E
 @step("checks", provides=("yield_check", "fatigue_check"), model=lambda convention: convention.yield_rule)
 def raceway_checks(tau_max, tresca_max, tau_xz_range, yield_strength, convention):
     """The plastic-deformation and fatigue rules of Delabenetta (2021) §4.1: tau_max against the yield
-    strength (the thesis) or the Tresca shear against half of it; fatigue when 2 tau_0 > sigma_y."""
+    strength (the thesis) or the Tresca shear against half of it; fatigue when 2 tau_0 > sigma_y.
+    Stresses and yield strength in [Pa]; the verdicts as text (in MPa)."""
     if convention.yield_rule == "thesis":
         shear, limit, label = tau_max, yield_strength, "tau_max vs sigma_y (thesis §4.1)"
     else:
@@ -123,9 +128,9 @@ def raceway_checks(tau_max, tresca_max, tau_xz_range, yield_strength, convention
 
 
 def slice_through_centre(a_rolling: float, p_h: float, result, measure: str):
-    """tau0 and z0 of the 2-D slice through a contact's centre along rolling (Saccheto 2008 §3.4):
-    Hertz pressure on the centre line and the traction ratio Tx/p of the traction model's central strip
-    (``result``: a FASTSIM result, or the EHL model's
+    """tau0 [Pa] and z0 [m] of the 2-D slice through a contact's centre along rolling (Saccheto 2008 §3.4):
+    Hertz pressure (``p_h`` [Pa], semi-axis ``a_rolling`` [m]) on the centre line and the traction ratio
+    Tx/p of the traction model's central strip (``result``: a FASTSIM result, or the EHL model's
     :class:`~camcontact.contact.spin_traction.CentreLineTraction`)."""
     a, p0 = a_rolling, p_h
     j = int(np.argmin(np.abs(result.y)))
@@ -151,3 +156,15 @@ def ball_cone_slice_stresses(a_rolling, p_h, surface_traction_in, surface_tracti
         extremum = slice_through_centre(a_rolling, p_h, result, stress_measure)
         out[f"tau0_{side}"], out[f"z0_{side}"] = extremum.tau0, extremum.z0
     return out
+
+
+@step("subsurface", provides=("tresca_max", "z_tresca_max", "von_mises_max", "z_von_mises_max"),
+      model="boussinesq_axis")
+def point_subsurface_stresses(a_rolling, a_transverse, p_h, nu1):
+    """The largest principal (Tresca) shear and von Mises stress [Pa] below a frictionless elliptical Hertz
+    contact and their depths [m] (:func:`~camcontact.contact.subsurface_point.point_subsurface`: Boussinesq's
+    stresses integrated over the Hertz pressure on the axis; Johnson 1985 Eqs. 3.19, 3.45), from the
+    semi-axes [m], p_h [Pa] and body 1's Poisson ratio nu1 [-]."""
+    found = point_subsurface(a_rolling, a_transverse, p_h, nu1)
+    return {"tresca_max": found.tresca_max, "z_tresca_max": found.z_tresca_max,
+            "von_mises_max": found.von_mises_max, "z_von_mises_max": found.z_von_mises_max}

@@ -42,7 +42,11 @@ def transmitted_traction(model, tangential_force: float, a_rolling: float, a_tra
     where the contact cannot (gross slip: creepage far past the limit, Ct p everywhere); slip fraction,
     regime ("partial slip" / "gross slip") and ``gross_slip``, capacity Ct N and margin 1 - F_t/(Ct N),
     spin moment, losses (:func:`~camcontact.contact.spin_traction.rolling_losses`) and the FASTSIM result
-    (``surface_traction``)."""
+    (``surface_traction``).
+
+    Inputs: forces [N], semi-axes ``a_rolling``, ``a_transverse`` [m], traction coefficient Ct [-],
+    ``shear_modulus`` [Pa], ``spin`` [1/m], ``rolling_speed`` [m/s]. Out: creepage, slip fraction, margin [-],
+    capacity [N], spin moment [N m], losses [W]."""
     a, b, N, mu, G = a_rolling, a_transverse, normal_force, traction_coefficient, shear_modulus
     grid = {"nx": model.nx, "ny": model.ny, "compiled": model.compiled, "pressure": model.pressure}
     try:
@@ -67,7 +71,8 @@ def ball_cone_traction(traction_model, a_rolling, a_transverse, normal_force, tr
     """FASTSIM (:func:`transmitted_traction`) at the CVT's input and output contact: creepage, slip
     fraction, regime ("partial slip" / "gross slip") and ``gross_slip``, capacity Ct N and margin
     1 - F_t/(Ct N), spin moment, creep and spin losses, and the FASTSIM result (``surface_traction``);
-    the spin creepage enters only with the ``spin`` effect."""
+    the spin creepage enters only with the ``spin`` effect. Units as :func:`transmitted_traction`
+    (forces [N], semi-axes [m], ``shear_modulus`` [Pa], spins [1/m], rolling speeds [m/s])."""
     out = {}
     for side, force, phi, speed in (("in", tangential_force_in, spin_in, rolling_speed_in),
                                     ("out", tangential_force_out, spin_out, rolling_speed_out)):
@@ -112,7 +117,10 @@ def ball_cone_ehl_traction(traction_model, fluid_model, a_rolling, a_transverse,
     input and output contact, on each contact's central film: creepage, regime ("viscous", "plateau",
     "gross slip") and ``gross_slip``, capacity and margin, spin moment, creep and spin losses, the lumped
     temperature rise (thermal fluid), ``traction_valid``, the centre-line traction for the slice
-    stresses (``surface_traction``) and the traction over the contact for its map (``traction_map``). ``inputs``: ``effusivity`` of the surfaces for a thermal fluid;
+    stresses (``surface_traction``) and the traction over the contact for its map (``traction_map``).
+    Inputs (SI): semi-axes ``a_rolling``, ``a_transverse`` [m], ``p_h`` [Pa], central films ``h_c_in``,
+    ``h_c_out`` [m], forces [N], spins [1/m], rolling speeds [m/s]; out: capacity [N], spin moment [N m],
+    losses [W], temperature rise [K]. ``inputs``: ``effusivity`` of the surfaces [W s^0.5/(m^2 K)] for a thermal fluid;
     ``pressure_field_in``/``_out``, the numerical film's pressure and film (the traction is then taken
     over them instead of the Hertz pressure and the central film; None: Hertz) and ``numerical_pressure``
     (the scene's film is numerical: a side without a field — its solution did not converge — falls back

@@ -86,7 +86,9 @@ def ball_cone_ehl_traction_curve(traction_model, fluid_model, a_rolling, a_trans
     |nu_x| from 0 to the model's ``max_creepage`` on the contact the traction step solved (same film, mixed
     share, pressure field, thermal fluid; :func:`~camcontact.steps.traction.ehl_contact`), with the contact's
     spin and without it, and the step's operating creepage, needed coefficient |F_t|/N and capacity/N.
-    ``inputs`` as :func:`~camcontact.steps.traction.ball_cone_ehl_traction`."""
+    ``inputs`` as :func:`~camcontact.steps.traction.ball_cone_ehl_traction`. Inputs (SI): semi-axes
+    ``a_rolling``, ``a_transverse`` [m], ``p_h`` [Pa], central films ``h_c_in``, ``h_c_out`` [m], forces and
+    capacities [N], spins [1/m], rolling speeds [m/s], the traction step's creepages [-]."""
     grid = creepage_grid(traction_model.max_creepage)
     label = ehl_model_label(fluid_model, inputs.get("numerical_pressure"))
     out = {}
@@ -112,7 +114,9 @@ def ball_cone_traction_curve(traction_model, a_rolling, a_transverse, normal_for
     """FASTSIM's traction curve (:class:`TractionCurve`) of the CVT's input and output contact: |F_x|/N at
     |nu_x| from 0 to 1.5 times the larger of the creepage that reaches 99 % of Ct N without spin and the
     operating one (not in gross slip: that creepage is nominal), with the contact's spin and without it;
-    the capacity is Ct N (Kalker 1982, Vehicle Syst. Dyn. 11:1–13; Saccheto 2008 §3.3)."""
+    the capacity is Ct N (Kalker 1982, Vehicle Syst. Dyn. 11:1–13; Saccheto 2008 §3.3). Inputs (SI):
+    semi-axes ``a_rolling``, ``a_transverse`` [m], forces [N], Ct [-], ``shear_modulus`` [Pa], spins [1/m],
+    the traction step's creepages [-]."""
     a, b, N, mu, G = a_rolling, a_transverse, normal_force, traction_coefficient, shear_modulus
     grid = {"nx": traction_model.nx, "ny": traction_model.ny, "compiled": traction_model.compiled,
             "pressure": traction_model.pressure}
