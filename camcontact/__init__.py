@@ -9,8 +9,9 @@ use of a model family) and compiles no numba kernel.
 
 from . import registry, step_graph
 from .analysis import Analysis, Result
-from .components import (BallConeCVT, Body, Cam, CamFollower, Follower, LineContact, LoadedBallConeCVT, LoadedBearing,
-                         Lubricant, Material, PointContact, RacewayContact, SphericalRollerBearing, ValveTrain)
+from .components import (BallBearing, BallConeCVT, Body, Cam, CamFollower, Follower, LineContact, LoadedBallBearing,
+                         LoadedBallConeCVT, LoadedBearing, Lubricant, Material, PointContact, RacewayContact,
+                         SphericalRollerBearing, ValveTrain)
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
 
@@ -48,6 +49,7 @@ def __dir__() -> list[str]:
 
 __all__ = [
     "Analysis",
+    "BallBearing",
     "BallConeCVT",
     "Body",
     "Cam",
@@ -57,6 +59,7 @@ __all__ = [
     "Follower",
     "InputError",
     "LineContact",
+    "LoadedBallBearing",
     "LoadedBallConeCVT",
     "LoadedBearing",
     "Lubricant",

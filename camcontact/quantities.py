@@ -34,8 +34,10 @@ def _q(name: str, si_unit: str | None, display_unit: str | None, description: st
 _UNLOADED = (("loaded", False), ("contact_regime", "unloaded"))
 _NAN_WHEN = {
     **{f"{q}_{race}": _UNLOADED for q in ("b", "p_h", "h_c", "h_min", "Lambda", "flash_temperature",
-                                          "rolling_resistance", "asperity_load_fraction", "h_c_mixed")
+                                          "rolling_resistance", "asperity_load_fraction", "h_c_mixed", "a_rolling",
+                                          "a_transverse")
        for race in ("inner", "outer")},
+    "contact_angle": _UNLOADED,
     # a cam follower that has left the cam (contact_open) has no contact, so no film
     **{q: (("contact_open", True),) for q in ("h_c", "h_min", "Lambda_c", "Lambda_min", "h_c_isothermal",
                                               "h_min_isothermal")},
@@ -179,8 +181,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("roller", "", "", "roller number (row by row, 0-based)"),
         _q("roller_row", "", "", "row of the roller (1 or 2)"),
         _q("azimuth", "rad", "deg", "roller azimuth from the line of the radial load"),
-        _q("Q", "N", "kN", "roller load (inner and outer contact)"),
-        _q("loaded", None, None, "True for a roller in contact (Q > 0)"),
+        _q("Q", "N", "kN", "rolling-element load (roller or ball; inner and outer contact)"),
+        _q("loaded", None, None, "True for a rolling element in contact (Q > 0)"),
         _q("roller_approach", "m", "um", "elastic approach of the roller's contacts (negative: gap)"),
         _q("Q_max", "N", "kN", "largest roller load"),
         _q("loaded_rollers", "", "", "number of rollers in contact"),
@@ -211,7 +213,7 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("a1", "", "", "life modification factor for reliability (ISO 281 Table 12)"),
         _q("nu1", "m^2/s", "mm^2/s", "rated viscosity (ISO 281)"),
         _q("kappa", "", "", "viscosity ratio nu / nu1"),
-        _q("a_ISO", "", "", "life modification factor (ISO 281, radial roller bearings)"),
+        _q("a_ISO", "", "", "life modification factor (ISO 281; of radial roller or ball bearings)"),
         _q("L_nm", "revolution_count", "Mrev", "modified rating life, a count of revolutions (ISO 281; shown in millions)"),
         _q("L_nmh", "s", "h", "modified rating life in operating hours"),
         _q("friction_coefficient_inner", "", "", "friction coefficient at the inner raceway (fluid traction, with "
@@ -241,6 +243,29 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("rolling_resistance_outer", "N", "N", "hydrodynamic rolling resistance at the outer raceway (Goksem & Hargreaves)"),
         _q("rolling_resistance_moment", "N*m", "N*m", "bearing moment of the rollers' hydrodynamic rolling resistance"),
         _q("rolling_resistance_power", "W", "W", "power of the rollers' hydrodynamic rolling resistance sum(F_R u_m)"),
+        # ball bearing (scenes.ball_bearing; per ball: arrays over the index "ball")
+        _q("ball", "", "", "ball number (0-based, from the load line)"),
+        _q("ball_azimuth", "rad", "deg", "ball azimuth from the line of the radial load"),
+        _q("contact_angle", "rad", "deg", "contact angle of the ball under load (NaN unloaded)"),
+        _q("ball_approach", "m", "um", "elastic deformation of the ball's two contacts (negative: gap)"),
+        _q("loaded_balls", "", "", "number of balls in contact"),
+        _q("ring_tilt", "rad", "deg", "tilt of the inner ring against the outer (0 when the shaft holds it square)"),
+        _q("tilting_moment", "N*m", "N*m", "moment of the ball loads about the bearing centre"),
+        _q("contact_angle_max", "rad", "deg", "largest contact angle of the loaded balls"),
+        _q("contact_angle_min", "rad", "deg", "smallest contact angle of the loaded balls"),
+        _q("a_rolling_inner", "m", "um", "Hertz semi-axis along rolling at the inner raceway"),
+        _q("a_transverse_inner", "m", "um", "Hertz semi-axis across rolling at the inner raceway"),
+        _q("a_rolling_outer", "m", "um", "Hertz semi-axis along rolling at the outer raceway"),
+        _q("a_transverse_outer", "m", "um", "Hertz semi-axis across rolling at the outer raceway"),
+        _q("most_loaded_race", None, None, "raceway of the contact with the highest pressure"),
+        _q("e", "", "", "ISO 281 limit of F_a/F_r for the axial-load factors"),
+        _q("X", "", "", "ISO 281 radial load factor"),
+        _q("Y", "", "", "ISO 281 axial load factor"),
+        _q("P0", "N", "kN", "static equivalent load (ISO 76)"),
+        _q("s0", "", "", "static safety factor C0/P0 (ISO 76)"),
+        _q("L10r", "revolution_count", "Mrev", "basic reference rating life from the internal load distribution "
+                                               "(ISO/TS 16281; shown in millions)"),
+        _q("L10rh", "s", "h", "basic reference rating life in operating hours (ISO/TS 16281)"),
         # ball-cone CVT (scenes.ball_cone_cvt); _in / _out: the input / output cone contact
         _q("tilt", "rad", "deg", "ball tilt beta"),
         _q("reduction_ratio", "", "", "omega_in / omega_out"),

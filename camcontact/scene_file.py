@@ -41,7 +41,9 @@ fields, with nested [contact.cam] (its ``program`` a table of ``segments``), [co
 "corrected"]`` runs both side by side. A ``bearing`` scene's [contact] holds
 :class:`~camcontact.components.LoadedBearing` fields with [contact.bearing] (a
 :class:`~camcontact.components.SphericalRollerBearing`, its [contact.bearing.material]) and
-[contact.lubricant]. A ``ball_cone_cvt`` scene's [contact] holds
+[contact.lubricant]; a ``ball_bearing`` scene's [contact] holds :class:`~camcontact.components.LoadedBallBearing`
+fields with [contact.bearing] (a :class:`~camcontact.components.BallBearing`, its [contact.bearing.material])
+and [contact.lubricant]. A ``ball_cone_cvt`` scene's [contact] holds
 :class:`~camcontact.components.LoadedBallConeCVT` fields with [contact.cvt] (a
 :class:`~camcontact.components.BallConeCVT`, its [contact.cvt.material] and [contact.cvt.lubricant]).
 """
@@ -60,12 +62,14 @@ import attrs
 
 from .analysis import Analysis
 from .components import (
+    BallBearing,
     BallConeCVT,
     Body,
     Cam,
     CamFollower,
     Follower,
     LineContact,
+    LoadedBallBearing,
     LoadedBallConeCVT,
     LoadedBearing,
     Lubricant,
@@ -107,7 +111,8 @@ def _motion_program(table: Any, where: str) -> Any:
 
 #: scene kind -> component class of the [contact] table (the scene component)
 _KINDS = {"line_contact": LineContact, "cam_follower": CamFollower, "raceway_contact": RacewayContact,
-          "bearing": LoadedBearing, "ball_cone_cvt": LoadedBallConeCVT, "point_contact": PointContact}
+          "bearing": LoadedBearing, "ball_bearing": LoadedBallBearing, "ball_cone_cvt": LoadedBallConeCVT,
+          "point_contact": PointContact}
 #: nested tables: component class -> {field: component class, or a builder(table, where)}
 _NESTED: dict[type, dict[str, Any]] = {
     LineContact: {"body1": Body, "body2": Body, "lubricant": Lubricant},
@@ -119,6 +124,8 @@ _NESTED: dict[type, dict[str, Any]] = {
     RacewayContact: {"raceway_material": Material, "roller_material": Material, "lubricant": Lubricant},
     LoadedBearing: {"bearing": SphericalRollerBearing, "lubricant": Lubricant},
     SphericalRollerBearing: {"material": Material},
+    LoadedBallBearing: {"bearing": BallBearing, "lubricant": Lubricant},
+    BallBearing: {"material": Material},
     LoadedBallConeCVT: {"cvt": BallConeCVT},
     BallConeCVT: {"material": Material, "lubricant": Lubricant},
 }

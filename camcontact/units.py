@@ -41,6 +41,7 @@ __all__ = [
     "format_quantity",
     "in_range",
     "instance_of",
+    "integer_in_range",
     "non_negative",
     "number_field",
     "one_of",
@@ -344,6 +345,17 @@ def boolean(instance, attribute, value):
     """attrs validator: True or False only (a string such as ``"false"`` is not read as a boolean)."""
     if not isinstance(value, (bool, np.bool_)):
         raise InputError(f"{_name(instance, attribute)} = {value!r}; allowed: true or false (a boolean)")
+
+
+def integer_in_range(lower: int, upper: int):
+    """attrs validator: an integer (not a boolean) with lower <= value <= upper (InputError naming the field,
+    the value and the range)."""
+
+    def _validate(instance, attribute, value):
+        if not (isinstance(value, (int, np.integer)) and not isinstance(value, bool) and lower <= value <= upper):
+            raise InputError(f"{_name(instance, attribute)} = {value!r}; allowed: an integer {lower}..{upper}")
+
+    return _validate
 
 
 def text(instance, attribute, value):

@@ -1,9 +1,11 @@
 """Components: attrs classes with pint-typed fields, validated at construction."""
 
+from .ball_bearing import BallBearing
 from .ball_cone_cvt import BallConeCVT, LoadedBallConeCVT
 from .cam import Cam, Follower, ValveTrain
 from .cam_follower import CamFollower
 from .line_contact import Body, LineContact
+from .loaded_ball_bearing import LoadedBallBearing
 from .loaded_bearing import LoadedBearing
 from .lubricant import Lubricant, LubricantState
 from .material import Material
@@ -11,5 +13,5 @@ from .point_contact import PointContact
 from .raceway_contact import RacewayContact
 from .spherical_roller_bearing import SphericalRollerBearing
 
-__all__ = ["BallConeCVT", "Body", "Cam", "CamFollower", "Follower", "LineContact", "LoadedBallConeCVT", "LoadedBearing",
-           "Lubricant", "LubricantState", "Material", "PointContact", "RacewayContact", "SphericalRollerBearing", "ValveTrain"]
+__all__ = ["BallBearing", "BallConeCVT", "Body", "Cam", "CamFollower", "Follower", "LineContact", "LoadedBallBearing",
+           "LoadedBallConeCVT", "LoadedBearing", "Lubricant", "LubricantState", "Material", "PointContact", "RacewayContact", "SphericalRollerBearing", "ValveTrain"]

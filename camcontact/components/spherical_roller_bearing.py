@@ -20,24 +20,15 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import ANGLE, Component, Quantity, in_range, instance_of, non_negative, positive, quantity_field, text
+from ..units import (ANGLE, Component, Quantity, in_range, instance_of, integer_in_range, non_negative, positive,
+                     quantity_field, text)
+from .bearing_envelope import check_bearing_envelope, pitch_diameter_of
 from .material import Material
 
 __all__ = ["SphericalRollerBearing"]
 
 #: the most rollers per row a bearing may have
 MAX_ROLLERS = 1000
-
-
-def _count(lower: int, upper: int | None = None):
-    def _validate(instance, attribute, value):
-        top = MAX_ROLLERS if upper is None else upper
-        ok = isinstance(value, int) and not isinstance(value, bool) and lower <= value <= top
-        if not ok:
-            allowed = f"an integer {lower}..{top}"
-            raise InputError(f"{type(instance).__name__}.{attribute.name} = {value!r}; allowed: {allowed}")
-
-    return _validate
 
 
 def _series(instance, attribute, value):
@@ -98,7 +89,7 @@ class SphericalRollerBearing(Component):
     bore: Quantity = quantity_field("[length]", validators=[positive("m")])
     outer_diameter: Quantity = quantity_field("[length]", validators=[positive("m")])
     width: Quantity = quantity_field("[length]", validators=[positive("m")])
-    rollers_per_row: int = attrs.field(validator=_count(3))
+    rollers_per_row: int = attrs.field(validator=integer_in_range(3, MAX_ROLLERS))
     roller_diameter: Quantity = quantity_field("[length]", validators=[positive("m")])
     roller_length: Quantity = quantity_field("[length]", validators=[positive("m")])
     pitch_diameter: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
@@ -108,7 +99,7 @@ class SphericalRollerBearing(Component):
     C0: Quantity = quantity_field("[force]", validators=[positive("N")])
     fatigue_load_limit: Quantity = quantity_field("[force]", optional=True, validators=[positive("N")])
     radial_clearance: Quantity = quantity_field("[length]", default="0 mm")
-    rows: int = attrs.field(default=2, validator=_count(1, 2))
+    rows: int = attrs.field(default=2, validator=integer_in_range(1, 2))
     row_offset: Quantity = quantity_field(ANGLE, default="0 deg")
     material: Material | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Material)))
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
@@ -118,30 +109,15 @@ class SphericalRollerBearing(Component):
 
     def __attrs_post_init__(self) -> None:
         si, where = self.si, f"SphericalRollerBearing {self.designation!r}"
-        d, D = si.bore, si.outer_diameter
-        if not d < D:
-            raise InputError(f"{where}: bore = {self.bore} must be smaller than outer_diameter = {self.outer_diameter}")
-        d_m = self.d_m
-        if not d < d_m < D:
-            raise InputError(f"{where}: pitch_diameter = {d_m * 1e3:.4g} mm must lie between the bore "
-                             f"({d * 1e3:.4g} mm) and the outer diameter ({D * 1e3:.4g} mm)")
-        if not si.roller_diameter < 0.5 * (D - d):
-            raise InputError(f"{where}: roller_diameter = {self.roller_diameter} must be smaller than the "
-                             f"section height (D - d)/2 = {0.5e3 * (D - d):.4g} mm")
+        check_bearing_envelope(where, self, "roller_diameter", "rollers_per_row")
         if not si.roller_length <= si.width:
             raise InputError(f"{where}: roller_length = {self.roller_length} exceeds the width {self.width}")
-        if self.rollers_per_row * si.roller_diameter >= math.pi * d_m:
-            raise InputError(f"{where}: rollers_per_row = {self.rollers_per_row} rollers of roller_diameter = "
-                             f"{self.roller_diameter} do not fit on the pitch circle (pi d_m = {math.pi * d_m * 1e3:.4g} "
-                             "mm, d_m the pitch_diameter or (bore + outer_diameter)/2)")
 
     # ------------------------------------------------------------------ derived geometry (SI)
     @property
     def d_m(self) -> float:
         """Pitch diameter [m] ((d + D)/2 unless given)."""
-        if self.pitch_diameter is not None:
-            return self.si.pitch_diameter
-        return 0.5 * (self.si.bore + self.si.outer_diameter)
+        return pitch_diameter_of(self)
 
     @property
     def gamma(self) -> float:

@@ -1,4 +1,7 @@
-"""Rating life of a radial roller bearing after ISO 281:2007: L10, a1, kappa, a_ISO, L_nm.
+"""Rating life of a radial roller (or ball) bearing after ISO 281:2007: L10, a1, kappa, a_ISO, L_nm.
+
+Ball bearings (``ISO281(rolling_element="ball")``): L10 = (C/P)^3 and a_ISO of radial ball bearings
+(:mod:`camcontact.models.iso281_ball`, which also gives their C_r and P); the rest as below.
 
 * Basic rating life L10 = (C/P)^(10/3) [10^6 revolutions]; L10h = 10^6 L10 / (60 n) [h] (held in
   seconds, SI, like every camcontact value; reports show hours).
@@ -32,10 +35,11 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from ..units import in_range, number_field
+from ..units import in_range, number_field, one_of
 from .base import LifeModel, builtin
 
-__all__ = ["ISO281", "a_iso_roller", "equivalent_load", "rated_viscosity", "reliability_factor"]
+__all__ = ["A_ISO_FORMS", "ISO281", "a_iso", "a_iso_ball", "a_iso_roller", "equivalent_load", "rated_viscosity",
+           "reliability_factor"]
 
 #: ISO 281:2007 Table 12: reliability [%] -> a1
 A1_TABLE = {90.0: 1.0, 95.0: 0.64, 96.0: 0.55, 97.0: 0.47, 98.0: 0.37, 99.0: 0.25, 99.2: 0.22, 99.4: 0.19,
@@ -82,28 +86,50 @@ def rated_viscosity(speed_rpm: float, pitch_diameter_mm: float) -> float:
     return 4500.0 * speed_rpm**-0.5 * pitch_diameter_mm**-0.5
 
 
-def a_iso_roller(kappa: float, contamination_load_ratio: float) -> float:
-    """a_ISO of a radial roller bearing for kappa and e_C C_u / P (capped at 50).
+#: a_ISO = 0.1 [1 - (base - c2 / kappa^c3)^e1 (e_C C_u / P)^e2]^e3 per rolling element: (base, bands, e1, e2, e3)
+A_ISO_FORMS = {"roller": (1.5859, A_ISO_BANDS, 1.0, 0.4, -9.185),
+               "ball": (2.5671, ((0.1, 2.2649, 0.054381), (0.4, 1.9987, 0.19087), (1.0, 1.9987, 0.071739)),
+                        0.83, 1.0 / 3.0, -9.3)}
 
-    kappa above 4 counts as 4; below 0.1 ISO 281 gives no factor: InputError.
-    """
+
+def a_iso(kappa: float, contamination_load_ratio: float, rolling_element: str = "roller") -> float:
+    """a_ISO of a radial roller or ball bearing (ISO 281:2007 Eqs. 31-36: :data:`A_ISO_FORMS`) for kappa and
+    e_C C_u / P (capped at 50). kappa above 4 counts as 4; below 0.1 ISO 281 gives no factor: InputError."""
     if not math.isfinite(kappa) or kappa < 0.1:
         raise InputError(f"a_ISO: kappa = {kappa!r} is below 0.1, where ISO 281 gives no life modification "
                          "factor (the lubricant is too thin for the speed: raise its viscosity or check nu1)")
     if not (contamination_load_ratio >= 0.0 and math.isfinite(contamination_load_ratio)):
         raise InputError(f"a_ISO: e_C C_u / P = {contamination_load_ratio!r}; allowed: finite and >= 0")
+    base, bands, e1, e2, e3 = A_ISO_FORMS[rolling_element]
     kappa = min(kappa, 4.0)
-    c2, c3 = next((c2, c3) for low, c2, c3 in reversed(A_ISO_BANDS) if kappa >= low)
-    bracket = 1.0 - (1.5859 - c2 / kappa**c3) * contamination_load_ratio**0.4
+    c2, c3 = next((c2, c3) for low, c2, c3 in reversed(bands) if kappa >= low)
+    bracket = 1.0 - (base - c2 / kappa**c3) ** e1 * contamination_load_ratio**e2
     if bracket <= 0.0:
         return A_ISO_CAP
-    return min(0.1 * bracket**-9.185, A_ISO_CAP)
+    return min(0.1 * bracket**e3, A_ISO_CAP)
+
+
+def a_iso_roller(kappa: float, contamination_load_ratio: float) -> float:
+    """a_ISO of a radial roller bearing (:func:`a_iso`)."""
+    return a_iso(kappa, contamination_load_ratio, "roller")
+
+
+def a_iso_ball(kappa: float, contamination_load_ratio: float) -> float:
+    """a_ISO of a radial ball bearing (:func:`a_iso`): 0.1 [1 - (2.5671 - c2 / kappa^c3)^0.83 (e_C C_u / P)^(1/3)]^-9.3
+    with (c2, c3) = (2.2649, 0.054381) for 0.1 <= kappa < 0.4, (1.9987, 0.19087) for 0.4 <= kappa < 1 and
+    (1.9987, 0.071739) for 1 <= kappa <= 4 (ISO 281:2007 Eqs. 31-33, as transcribed in independent public
+    implementations; the 0.019087 some codes carry is not continuous at kappa = 0.4)."""
+    return a_iso(kappa, contamination_load_ratio, "ball")
+
+
+#: L10 exponent p of ISO 281 per rolling element
+LIFE_EXPONENTS = {"roller": LIFE_EXPONENT, "ball": 3.0}
 
 
 @builtin
 @attrs.frozen
 class ISO281(LifeModel):
-    """Modified rating life of a radial roller bearing, ISO 281:2007 (L10, a1, kappa, a_ISO, L_nm).
+    """Modified rating life of a radial roller (or ball) bearing, ISO 281:2007 (L10, a1, kappa, a_ISO, L_nm).
 
     Inputs (``requires``, SI): ``C`` dynamic load rating [N], ``P`` dynamic equivalent load [N],
     ``speed`` inner-ring speed [1/s] (revolutions per second), ``pitch_diameter`` d_m [m],
@@ -117,6 +143,9 @@ class ISO281(LifeModel):
         Required reliability [%] (90..99.95; 90 gives a1 = 1).
     contamination : float
         e_C, the contamination factor (0 < e_C <= 1; 1 = extreme cleanliness).
+    rolling_element : str
+        "roller" (default: L10 = (C/P)^(10/3), a_ISO of roller bearings) or "ball" (L10 = (C/P)^3, a_ISO of
+        ball bearings, :func:`a_iso_ball`).
     """
 
     name = "iso281"
@@ -126,6 +155,7 @@ class ISO281(LifeModel):
 
     reliability: float = number_field(default=90.0, validators=[in_range(90.0, 99.95)])
     contamination: float = number_field(default=1.0, validators=[in_range(0.0, 1.0, lower_inclusive=False)])
+    rolling_element: str = attrs.field(default="roller", validator=one_of(*LIFE_EXPONENTS))
 
     def evaluate(self, C, P, speed, pitch_diameter, viscosity, fatigue_load_limit):
         """Rating lives and factors (see the class docstring) for SI inputs."""
@@ -134,12 +164,12 @@ class ISO281(LifeModel):
         for key, value in values.items():
             if value is None or not (np.isfinite(value) and value > 0.0):
                 raise InputError(f"life model 'iso281': {key} = {value!r}; needs a finite value > 0")
-        L10 = (C / P) ** LIFE_EXPONENT * 1e6
+        L10 = (C / P) ** LIFE_EXPONENTS[self.rolling_element] * 1e6
         rpm = 60.0 * speed
         nu1 = rated_viscosity(rpm, 1e3 * pitch_diameter) * 1e-6
         kappa = viscosity / nu1
         a1 = reliability_factor(self.reliability)
-        a_iso = a_iso_roller(kappa, self.contamination * fatigue_load_limit / P)
-        L_nm = a1 * a_iso * L10
-        return {"L10": L10, "L10h": L10 / speed, "a1": a1, "nu1": nu1, "kappa": kappa, "a_ISO": a_iso,
+        a_iso_value = a_iso(kappa, self.contamination * fatigue_load_limit / P, self.rolling_element)
+        L_nm = a1 * a_iso_value * L10
+        return {"L10": L10, "L10h": L10 / speed, "a1": a1, "nu1": nu1, "kappa": kappa, "a_ISO": a_iso_value,
                 "L_nm": L_nm, "L_nmh": L_nm / speed}

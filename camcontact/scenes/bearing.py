@@ -130,7 +130,7 @@ def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
         "roller": np.arange(bearing.roller_count, dtype=float), "bearing": bearing,
         "radial_load": scene.si.radial_load, "axial_load": scene.si.axial_load,
         "n_inner": scene.si.speed / (2 * math.pi), "n_outer": scene.si.outer_speed / (2 * math.pi),
-        "reliability": scene.reliability, "C": b_si.C, "contact_angle": b_si.contact_angle,
+        "reliability": scene.reliability, "C": b_si.C, "contact_angle": b_si.contact_angle, "rolling_element": "roller",
         "gamma": bearing.gamma, "pitch_diameter": bearing.d_m, "roller_diameter": b_si.roller_diameter,
         "contact_radii": bearing.contact_radii, "roller_length": b_si.roller_length,
         "bore": b_si.bore, "outer_diameter": b_si.outer_diameter,

@@ -15,7 +15,7 @@ import numpy as np
 
 from .. import registry
 from ..errors import InputError
-from ..models.life_iso281 import LIFE_EXPONENT, equivalent_load
+from ..models.life_iso281 import LIFE_EXPONENTS, equivalent_load
 from ..models.life_lundberg_palmgren import life_time, system_life
 from ..step_graph import step
 
@@ -30,12 +30,12 @@ def bearing_equivalent_load(radial_load, axial_load, contact_angle):
 
 
 @step("rating_life", provides=("L10", "L10h"), model="iso281")
-def rating_life(C, P, n_inner, n_outer):
-    """Basic rating life L10 = (C/P)^(10/3) 10^6 [revolutions] and in time [s] at the rings' relative speed
-    |n_i - n_o| [rev/s] (infinite without load or motion)."""
+def rating_life(C, P, n_inner, n_outer, rolling_element):
+    """Basic rating life L10 = (C/P)^p 10^6 [revolutions] (p = 10/3 for a ``rolling_element`` "roller", 3 for a
+    "ball") and in time [s] at the rings' relative speed |n_i - n_o| [rev/s] (infinite without load or motion)."""
     if P <= 0.0:
         return {"L10": math.inf, "L10h": math.inf}
-    L10 = (C / P) ** LIFE_EXPONENT * 1e6
+    L10 = (C / P) ** LIFE_EXPONENTS[rolling_element] * 1e6
     relative = abs(n_inner - n_outer)
     return {"L10": L10, "L10h": L10 / relative if relative > 0 else math.inf}  # seconds (SI)
 
@@ -54,11 +54,21 @@ def check_rating_life_model(life_model) -> None:
 @step("modified_life", provides=("a1", "nu1", "kappa", "a_ISO", "L_nm", "L_nmh"),
       model=lambda life_model: str(life_model), check=check_rating_life_model)
 def modified_rating_life(life_model, C, P, n_inner, n_outer, lubricant, lubricant_state, fatigue_load_limit,
-                         reliability, contamination, pitch_diameter):
+                         reliability, contamination, pitch_diameter, rolling_element):
     """ISO 281 modified rating life L_nm with a1 (``reliability``), kappa = nu/nu1 and a_ISO (``contamination``
-    e_C, fatigue load limit P_u [N]); ``life_model`` a life model name or instance."""
-    model = registry.get("life_models", life_model, reliability=reliability, contamination=contamination) \
-        if isinstance(life_model, str) else life_model
+    e_C, fatigue load limit P_u [N]) of a bearing with ``rolling_element`` "roller" or "ball"; ``life_model`` a
+    life model name (made with these) or instance."""
+    if isinstance(life_model, str):
+        made = {"reliability": reliability, "contamination": contamination}
+        if "rolling_element" in inspect.signature(registry.get_class("life_models", life_model)).parameters:
+            made["rolling_element"] = rolling_element
+        model = registry.get("life_models", life_model, **made)
+    else:
+        model = life_model
+        given_element = getattr(model, "rolling_element", rolling_element)
+        if given_element != rolling_element:
+            raise InputError(f"life model {model!r}: rolling_element = {given_element!r}, but the bearing's rolling "
+                             f"elements are {rolling_element}s (make it with rolling_element={rolling_element!r})")
     viscosity = lubricant_state.kinematic_viscosity
     if viscosity is None:
         raise InputError(f"Lubricant {lubricant.name!r}: its kinematic viscosity at the operating "

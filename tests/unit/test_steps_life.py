@@ -44,17 +44,17 @@ def test_bearing_equivalent_load_both_branches():
 def test_rating_life_skf_vibrating_screen():
     """SKF "Vibrating screen": C/P = 7.3, 756 r/min: L10 = 7.3^(10/3) 10^6 rev, L10h = L10/(756/60) s
     (= 1e6/(60 x 756) x 7.3^(10/3) h); the speed is the rings' relative speed |n_i - n_o|."""
-    out = rating_life(7.3 * 186e3, 186e3, 756 / 60, 0.0)
+    out = rating_life(7.3 * 186e3, 186e3, 756 / 60, 0.0, "roller")
     assert_provides(rating_life, out)
     assert out["L10"] == pytest.approx(7.3 ** (10 / 3) * 1e6, rel=1e-12)
     assert out["L10h"] / 3600 == pytest.approx(1e6 / (60 * 756) * 7.3 ** (10 / 3), rel=1e-12)
-    assert rating_life(7.3 * 186e3, 186e3, 2.0, 2.0 + 756 / 60)["L10h"] == pytest.approx(out["L10h"], rel=1e-12)
+    assert rating_life(7.3 * 186e3, 186e3, 2.0, 2.0 + 756 / 60, "roller")["L10h"] == pytest.approx(out["L10h"], rel=1e-12)
 
 
 def test_rating_life_without_load_or_motion_is_infinite():
     """P = 0: infinite L10 and L10h; rings at the same speed: finite L10 but no revolutions, infinite L10h."""
-    assert rating_life(1e6, 0.0, 5.0, 0.0) == {"L10": math.inf, "L10h": math.inf}
-    still = rating_life(1e6, 1e5, 5.0, 5.0)
+    assert rating_life(1e6, 0.0, 5.0, 0.0, "roller") == {"L10": math.inf, "L10h": math.inf}
+    still = rating_life(1e6, 1e5, 5.0, 5.0, "roller")
     assert still["L10"] == pytest.approx(1e6 * 10 ** (10 / 3)) and still["L10h"] == math.inf
 
 
@@ -64,7 +64,7 @@ def test_modified_rating_life_iso_281():
     at 90 %, 0.25 at 99 % (Table 12); L_nm = a1 a_ISO L10, L_nmh = L_nm/n."""
     C, P, n = 7.3 * 186e3, 186e3, 756 / 60
     state = SimpleNamespace(kinematic_viscosity=40e-6)
-    out = modified_rating_life("iso281", C, P, n, 0.0, None, state, 132e3, 90.0, 0.5, 0.220)
+    out = modified_rating_life("iso281", C, P, n, 0.0, None, state, 132e3, 90.0, 0.5, 0.220, "roller")
     assert_provides(modified_rating_life, out)
     nu1 = 45000 * 756**-0.83 * 220**-0.5
     assert out["nu1"] * 1e6 == pytest.approx(nu1, rel=1e-12) and out["nu1"] * 1e6 == pytest.approx(12.38, abs=0.005)
@@ -75,10 +75,10 @@ def test_modified_rating_life_iso_281():
     L10 = 7.3 ** (10 / 3) * 1e6
     assert out["a1"] == 1.0 and out["L_nm"] == pytest.approx(a_iso * L10, rel=1e-12)
     assert out["L_nmh"] == pytest.approx(a_iso * L10 / n, rel=1e-12)
-    strict = modified_rating_life("iso281", C, P, n, 0.0, None, state, 132e3, 99.0, 0.5, 0.220)
+    strict = modified_rating_life("iso281", C, P, n, 0.0, None, state, 132e3, 99.0, 0.5, 0.220, "roller")
     assert strict["a1"] == 0.25 and strict["L_nm"] == pytest.approx(0.25 * a_iso * L10, rel=1e-12)
     model = cc.registry.get("life_models", "iso281", reliability=99.0, contamination=0.5)
-    assert modified_rating_life(model, C, P, n, 0.0, None, state, 132e3, 90.0, 1.0, 0.220)["a1"] == 0.25  # the instance rules
+    assert modified_rating_life(model, C, P, n, 0.0, None, state, 132e3, 90.0, 1.0, 0.220, "roller")["a1"] == 0.25  # the instance rules
 
 
 def test_modified_rating_life_needs_the_kinematic_viscosity():
@@ -87,7 +87,7 @@ def test_modified_rating_life_needs_the_kinematic_viscosity():
     state = lubricant.state(None)
     assert state.kinematic_viscosity is None
     with pytest.raises(InputError, match="'no density': its kinematic viscosity"):
-        modified_rating_life("iso281", 1e6, 1e5, 5.0, 0.0, lubricant, state, 2e5, 90.0, 0.5, 0.25)
+        modified_rating_life("iso281", 1e6, 1e5, 5.0, 0.0, lubricant, state, 2e5, 90.0, 0.5, 0.25, "roller")
 
 
 # ----------------------------------------------------------------------------- Lundberg–Palmgren

@@ -1,0 +1,218 @@
+"""Ball bearing: catalogue geometry, ratings and the internal geometry of its ball-raceway contacts.
+
+A single-row deep-groove or angular-contact ball bearing: Z balls of diameter D_w on the pitch
+diameter d_m, inner and outer raceway grooves of radii f_i D_w and f_o D_w (the osculations f > 0.5),
+and either a diametral clearance P_d (deep groove: the free contact angle follows,
+alpha_0 = arccos(1 - P_d / (2 (f_i + f_o - 1) D_w)), Harris & Kotzalas 2007 Eq. 2.9) or a nominal
+contact angle alpha_0 (angular contact). A ball touches each raceway in an elliptical contact with the
+reduced radii R_x = (D_w/2)(1 -/+ gamma) along rolling (inner/outer, gamma = D_w cos(alpha)/d_m) and
+R_y = f D_w/(2 f - 1) across (Harris & Kotzalas ch. 2; the major axis of the ellipse lies across).
+
+The ratings C (dynamic), C0 (static) and P_u (fatigue load limit) come from the catalogue; without a C
+the ISO 281:2007 rating C_r = b_m f_c (cos alpha)^0.7 Z^(2/3) D_w^1.8 is used
+(:func:`camcontact.models.iso281_ball.dynamic_load_rating`). :meth:`BallBearing.load_distribution`
+distributes radial, axial and moment loads over the balls with the contact angle changing under load
+(:mod:`camcontact.contact.ball_load_distribution`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import attrs
+
+from ..errors import InputError
+from ..units import (ANGLE, Component, Quantity, in_range, instance_of, integer_in_range, non_negative, number_field,
+                     one_of, positive, quantity_field, text)
+from .bearing_envelope import check_bearing_envelope, pitch_diameter_of
+from .material import Material
+
+__all__ = ["BallBearing", "BALL_BEARING_KINDS"]
+
+#: the ball bearing types this component describes
+BALL_BEARING_KINDS = ("deep_groove", "angular_contact")
+#: ISO 281 treats radial ball bearings up to this nominal contact angle (above: thrust bearings)
+MAX_CONTACT_ANGLE = 45.0
+MAX_BALLS = 1000
+
+
+def _osculation():
+    return [in_range(0.5, 1.0, lower_inclusive=False, upper_inclusive=False)]
+
+
+@attrs.frozen(kw_only=True)
+class BallBearing(Component):
+    """A single-row deep-groove or angular-contact ball bearing from catalogue data.
+
+    Parameters
+    ----------
+    designation : str
+        Catalogue designation (e.g. "6309").
+    kind : str
+        "deep_groove" (radial; contact angle from the clearance, both flanks) or "angular_contact"
+        (its balls touch one flank of each groove at the nominal ``contact_angle``).
+    bore, outer_diameter, width : Quantity or str
+        d, D, B [length].
+    ball_count : int
+        Z (3..1000).
+    ball_diameter : Quantity or str
+        D_w [length].
+    pitch_diameter : Quantity or str, optional
+        d_m [length]; default (d + D)/2.
+    inner_osculation, outer_osculation : float
+        f_i = r_i / D_w and f_o = r_o / D_w, the groove radii over the ball diameter (0.5 < f < 1;
+        typically 0.515-0.53; ISO 281's f_c assumes f_i <= 0.52 and f_o <= 0.53).
+    contact_angle : Quantity or str, optional
+        Nominal (free) contact angle alpha_0 of an angular-contact bearing [angle], 0 < alpha_0 <= 45°.
+        None for a deep-groove bearing (its free contact angle follows from the clearance).
+    radial_clearance : Quantity or str
+        Diametral (radial internal) clearance P_d of a deep-groove bearing [length] (default 0;
+        negative: preload). Must be below 2 (f_i + f_o - 1) D_w.
+    C, C0 : Quantity or str
+        Basic dynamic and static load ratings [force]; C None: ISO 281's C_r from the geometry.
+    fatigue_load_limit : Quantity or str, optional
+        P_u [force] (for a_ISO).
+    f0 : float, optional
+        ISO 76 factor f_0 (catalogues list it) for the axial-load factors of ISO 281 (f_0 F_a / C_0r); None:
+        f_0 F_a / C_0r = F_a / (Z D_w^2 cos alpha) [N/mm^2] from ISO 76's C_0r = f_0 Z D_w^2 cos(alpha).
+    material : Material, optional
+        Rings and balls (needed for the load distribution's Hertz stiffness, stresses and films).
+    roughness : Quantity or str, optional
+        RMS roughness of each surface [length] (composite = sqrt(2) times it).
+    name : str
+
+    Examples
+    --------
+    >>> import camcontact as cc
+    >>> bearing = cc.BallBearing(designation="6309", bore="45 mm", outer_diameter="100 mm", width="25 mm",
+    ...                          ball_count=8, ball_diameter="17.462 mm", inner_osculation=0.52,
+    ...                          outer_osculation=0.53, C="55.3 kN", C0="31.5 kN")
+    >>> round(bearing.d_m * 1e3, 1), round(bearing.gamma, 4)
+    (72.5, 0.2409)
+    """
+
+    name: str = attrs.field(default="bearing", validator=text)
+    designation: str = attrs.field(default="", validator=text)
+    kind: str = attrs.field(default="deep_groove", validator=one_of(*BALL_BEARING_KINDS))
+    bore: Quantity = quantity_field("[length]", validators=[positive("m")])
+    outer_diameter: Quantity = quantity_field("[length]", validators=[positive("m")])
+    width: Quantity = quantity_field("[length]", validators=[positive("m")])
+    ball_count: int = attrs.field(validator=integer_in_range(3, MAX_BALLS))
+    ball_diameter: Quantity = quantity_field("[length]", validators=[positive("m")])
+    pitch_diameter: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    inner_osculation: float = number_field(validators=_osculation())
+    outer_osculation: float = number_field(validators=_osculation())
+    contact_angle: Quantity = quantity_field(ANGLE, optional=True, validators=[
+        in_range(0.0, math.radians(MAX_CONTACT_ANGLE), lower_inclusive=False, unit="rad")])
+    radial_clearance: Quantity = quantity_field("[length]", default="0 mm")
+    C: Quantity = quantity_field("[force]", optional=True, validators=[positive("N")])
+    C0: Quantity = quantity_field("[force]", validators=[positive("N")])
+    fatigue_load_limit: Quantity = quantity_field("[force]", optional=True, validators=[positive("N")])
+    f0: float = number_field(optional=True, validators=[positive()])
+    material: Material | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Material)))
+    roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
+
+    def __attrs_post_init__(self) -> None:
+        si, where = self.si, f"BallBearing {self.designation or self.name!r}"
+        check_bearing_envelope(where, self, "ball_diameter", "ball_count")
+        if self.kind == "angular_contact":
+            if self.contact_angle is None:
+                raise InputError(f"{where}: an angular_contact bearing needs its contact_angle (nominal, e.g. '40 deg'; "
+                                 f"allowed 0 < alpha_0 <= {MAX_CONTACT_ANGLE:g} deg)")
+            if si.radial_clearance != 0.0:
+                raise InputError(f"{where}: radial_clearance = {self.radial_clearance} is for a deep_groove bearing; an "
+                                 "angular_contact bearing is set by its contact_angle")
+        else:
+            if self.contact_angle is not None:
+                raise InputError(f"{where}: contact_angle = {self.contact_angle} is for an angular_contact bearing; a "
+                                 "deep_groove bearing's free contact angle follows from its radial_clearance")
+            limit = 2.0 * self.groove_distance
+            if not si.radial_clearance < limit:
+                raise InputError(f"{where}: radial_clearance = {self.radial_clearance} is not below 2 (f_i + f_o - 1) D_w "
+                                 f"= {limit * 1e3:.4g} mm: the balls would not stay in their grooves")
+            if self.free_contact_angle > math.radians(MAX_CONTACT_ANGLE):
+                raise InputError(f"{where}: radial_clearance = {self.radial_clearance} gives a free contact angle of "
+                                 f"{math.degrees(self.free_contact_angle):.3g} deg, above the {MAX_CONTACT_ANGLE:g} deg of "
+                                 "a radial bearing (the clearance is too large for the grooves)")
+
+    # ------------------------------------------------------------------ derived geometry (SI)
+    @property
+    def d_m(self) -> float:
+        """Pitch diameter [m] ((d + D)/2 unless given)."""
+        return pitch_diameter_of(self)
+
+    @property
+    def groove_distance(self) -> float:
+        """A = (f_i + f_o - 1) D_w [m], the distance of the groove curvature centres (Harris & Kotzalas Eq. 2.4)."""
+        return (self.inner_osculation + self.outer_osculation - 1.0) * self.si.ball_diameter
+
+    @property
+    def free_contact_angle(self) -> float:
+        """alpha_0 [rad]: the nominal angle of an angular-contact bearing; of a deep-groove bearing
+        arccos(1 - P_d / (2A)) (0 without clearance; Harris & Kotzalas Eq. 2.9)."""
+        if self.kind == "angular_contact":
+            return self.si.contact_angle
+        return math.acos(max(-1.0, min(1.0, 1.0 - self.si.radial_clearance / (2.0 * self.groove_distance))))
+
+    @property
+    def rating_contact_angle(self) -> float:
+        """The nominal contact angle ISO 281 rates the bearing with [rad] (0 for a deep-groove bearing)."""
+        return self.free_contact_angle if self.kind == "angular_contact" else 0.0
+
+    @property
+    def gamma(self) -> float:
+        """gamma = D_w cos(alpha_0) / d_m [-]."""
+        return self.si.ball_diameter * math.cos(self.free_contact_angle) / self.d_m
+
+    def contact_radii(self, contact_angle: float | None = None) -> dict[str, tuple[float, float]]:
+        """(R_x, R_y) [m] of the inner and outer ball-raceway contacts at ``contact_angle`` [rad]
+        (default the free one)."""
+        from ..contact.ball_load_distribution import ball_race_radii
+
+        alpha = self.free_contact_angle if contact_angle is None else contact_angle
+        return {race: ball_race_radii(self.si.ball_diameter, self.d_m, f, alpha, race)
+                for race, f in (("inner", self.inner_osculation), ("outer", self.outer_osculation))}
+
+    @property
+    def dynamic_load_rating(self) -> float:
+        """C [N]: the catalogue's, or ISO 281's C_r from the geometry when none is given."""
+        if self.C is not None:
+            return self.si.C
+        return self.iso_dynamic_load_rating
+
+    @property
+    def iso_dynamic_load_rating(self) -> float:
+        """ISO 281:2007 C_r [N] from the geometry (:func:`camcontact.models.iso281_ball.dynamic_load_rating`)."""
+        from ..models.iso281_ball import dynamic_load_rating
+
+        return dynamic_load_rating(self.si.ball_diameter, self.d_m, self.ball_count, self.rating_contact_angle,
+                                   inner_osculation=self.inner_osculation, outer_osculation=self.outer_osculation)
+
+    # ------------------------------------------------------------------ analysis helpers
+    def load_distribution(self, radial_load, axial_load="0 N", moment=None):
+        """Ball loads and contact angles under F_r, F_a [force] and, if given, a tilting moment [force x length]
+        in the plane of F_r (Quantities or strings) by
+        :func:`camcontact.contact.ball_load_distribution.solve_ball_load_distribution`."""
+        from ..units import si_value, to_quantity
+
+        Fr = si_value(to_quantity(radial_load, "[force]", where="load_distribution(radial_load)"))
+        Fa = si_value(to_quantity(axial_load, "[force]", where="load_distribution(axial_load)"))
+        M = None if moment is None else si_value(to_quantity(moment, "[force] * [length]", where="load_distribution(moment)"))
+        return self.load_distribution_si(Fr, Fa, M)
+
+    def load_distribution_si(self, radial_load: float, axial_load: float = 0.0, moment: float | None = None):
+        """:meth:`load_distribution` for SI loads [N, N m] (the scene's entry); needs the material."""
+        from ..contact.ball_load_distribution import solve_ball_load_distribution
+        from ..contact.geometry import reduced_modulus
+
+        if self.material is None:
+            raise InputError(f"BallBearing {self.designation or self.name!r}: the load distribution needs the material "
+                             "(the Hertz stiffness of each ball's contacts); set BallBearing.material")
+        m = self.material
+        angular = self.kind == "angular_contact"
+        return solve_ball_load_distribution(
+            radial_load, axial_load, moment, ball_count=self.ball_count, ball_diameter=self.si.ball_diameter,
+            pitch_diameter=self.d_m, inner_osculation=self.inner_osculation, outer_osculation=self.outer_osculation,
+            E_reduced=reduced_modulus(m.si.E, m.nu, m.si.E, m.nu),
+            clearance=0.0 if angular else self.si.radial_clearance,
+            free_contact_angle=self.si.contact_angle if angular else None)
