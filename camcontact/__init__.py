@@ -31,6 +31,7 @@ _LAZY = {
     "load_scene": "scene_file", "sweep_frame": "sweep", "run_sweep": "sweep", "read_sweep": "sweep", "to_xarray": "sweep",
     "cvt_map": "scenes.ball_cone_cvt_map", "plot_cvt_map": "scenes.ball_cone_cvt_map",
     "stribeck_sweep": "scenes.stribeck", "plot_stribeck_curve": "scenes.stribeck",
+    "RollerProfile": "contact.roller_profile", "compare_roller_profiles": "scenes.roller_profile_study",
 }
 
 
@@ -68,6 +69,7 @@ __all__ = [
     "PluginLoadWarning",
     "PointContact",
     "RacewayContact",
+    "RollerProfile",
     "Segment",
     "SphericalRollerBearing",
     "Q_",
@@ -75,6 +77,7 @@ __all__ = [
     "UnknownModelError",
     "ValveTrain",
     "__version__",
+    "compare_roller_profiles",
     "cvt_map",
     "load_scene",
     "plot_cvt_map",
