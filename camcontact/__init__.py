@@ -9,9 +9,9 @@ use of a model family) and compiles no numba kernel.
 
 from . import registry, step_graph
 from .analysis import Analysis, Result
-from .components import (BallBearing, BallConeCVT, Body, Cam, CamFollower, Follower, LineContact, LoadedBallBearing,
-                         LoadedBallConeCVT, LoadedBearing, Lubricant, Material, PointContact, RacewayContact,
-                         SphericalRollerBearing, ValveTrain)
+from .components import (BallBearing, BallConeCVT, Body, Cam, CamFollower, CylindricalRollerBearing, Follower,
+                         LineContact, LoadedBallBearing, LoadedBallConeCVT, LoadedBearing, Lubricant, Material,
+                         PointContact, RacewayContact, SphericalRollerBearing, ValveTrain)
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
 
@@ -57,6 +57,7 @@ __all__ = [
     "CamFollower",
     "ConvergenceError",
     "ConvergenceWarning",
+    "CylindricalRollerBearing",
     "Follower",
     "InputError",
     "LineContact",

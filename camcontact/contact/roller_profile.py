@@ -11,7 +11,10 @@ the raceway. Profiles (:class:`RollerProfile`):
   pressure along an aligned roller on a half-space, c = (2 Q_d / (pi l E')) ln[1 / (1 - (2y/l)^2)];
 * ``"johns_gohar"``: Johns & Gohar's (1981) finite version of it,
   c = (2 Q_d / (pi l E')) ln[1 / (1 - (1 - 0.3033 b/a)(2y/l)^2)] with a = l/2 and b the Hertz
-  half-width under Q_d (finite at the ends, for manufacture).
+  half-width under Q_d (finite at the ends, for manufacture);
+* ``"iso_ts_16281"``: the reference profile of ISO/TS 16281 for a roller of diameter D_we when the real one
+  is unknown, 0.00035 D_we ln[1/(1 - (2y/l)^2)] (:func:`camcontact.contact.lamina_load_distribution.iso_default_profile`;
+  Lundberg's for about 3000 MPa).
 
 The slicing model (ISO/TS 16281:2008's laminae) cuts the contact into n slices of width l/n that each
 carry q_k = K_s max(delta - c_k + theta y_k, 0)^(10/9) without interaction, with K_s = K_l w/l the slice's share
@@ -44,21 +47,24 @@ from scipy.optimize import brentq
 from ..errors import InputError
 from .dry_contact import DryContact, solve_dry_contact
 from .hertz_line import hertz_line
+from .lamina_load_distribution import iso_default_profile
 from .load_distribution import line_contact_stiffness
 
 __all__ = ["PROFILE_KINDS", "LaminaResult", "RollerProfile", "roller_dry_contact", "solve_laminae"]
 
-PROFILE_KINDS = ("straight", "crowned", "lundberg", "johns_gohar")
+PROFILE_KINDS = ("straight", "crowned", "lundberg", "johns_gohar", "iso_ts_16281")
 
 
 @attrs.frozen(kw_only=True)
 class RollerProfile:
     """A roller profile (module docstring): ``kind`` one of :data:`PROFILE_KINDS`; ``crown_drop`` c_e [m] of a
-    ``"crowned"`` one; ``design_load`` Q_d [N] of a logarithmic one (Lundberg, Johns-Gohar)."""
+    ``"crowned"`` one; ``design_load`` Q_d [N] of a logarithmic one (Lundberg, Johns-Gohar); ``roller_diameter``
+    D_we [m] of the ISO/TS 16281 one."""
 
     kind: str = "straight"
     crown_drop: float = 0.0
     design_load: float = 0.0
+    roller_diameter: float = 0.0
 
     def __attrs_post_init__(self) -> None:
         if self.kind not in PROFILE_KINDS:
@@ -69,6 +75,9 @@ class RollerProfile:
         if self.kind in ("lundberg", "johns_gohar") and not (self.design_load > 0.0 and math.isfinite(self.design_load)):
             raise InputError(f"RollerProfile.design_load = {self.design_load!r} N; a logarithmic profile is designed for "
                              "a load > 0")
+        if self.kind == "iso_ts_16281" and not (self.roller_diameter > 0.0 and math.isfinite(self.roller_diameter)):
+            raise InputError(f"RollerProfile.roller_diameter = {self.roller_diameter!r} m; the ISO/TS 16281 profile "
+                             "scales with the roller diameter (> 0)")
 
     @property
     def label(self) -> str:
@@ -78,6 +87,8 @@ class RollerProfile:
         if self.kind in ("lundberg", "johns_gohar"):
             name = "Lundberg" if self.kind == "lundberg" else "Johns-Gohar"
             return f"{name} ({self.design_load * 1e-3:.3g} kN)"
+        if self.kind == "iso_ts_16281":
+            return "ISO/TS 16281"
         return "straight"
 
     def drop(self, y, length: float, E_reduced: float, R: float) -> np.ndarray:
@@ -90,6 +101,8 @@ class RollerProfile:
             return np.zeros_like(s)
         if self.kind == "crowned":
             return self.crown_drop * s**2
+        if self.kind == "iso_ts_16281":
+            return iso_default_profile(0.5 * s * length, self.roller_diameter, length)
         scale = 2.0 * self.design_load / (math.pi * length * E_reduced)
         if self.kind == "lundberg":
             return scale * np.log(1.0 / (1.0 - s**2))
