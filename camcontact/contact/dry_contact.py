@@ -41,16 +41,21 @@ from ..errors import ConvergenceError, InputError
 __all__ = ["DryContact", "love_rectangle", "solve_dry_contact"]
 
 
+def _term(u, v1, v2):
+    """u ln[(v1 + sqrt(u^2 + v1^2)) / (v2 + sqrt(u^2 + v2^2))] as u (asinh(v1/|u|) - asinh(v2/|u|)), which keeps
+    its digits on long, thin cells (0 where u = 0, its limit)."""
+    magnitude = np.abs(u)
+    safe = np.where(magnitude > 0.0, magnitude, 1.0)
+    return np.where(magnitude > 0.0, u * (np.arcsinh(v1 / safe) - np.arcsinh(v2 / safe)), 0.0)
+
+
 def love_rectangle(x, y, a: float, b: float):
     """Love's F(x, y) [m] for a unit pressure on the rectangle |x| <= a, |y| <= b (module docstring): the surface
     displacement is (2/(pi E')) F per unit pressure."""
     x = np.asarray(x, dtype=float)
     y = np.asarray(y, dtype=float)
     xp, xm, yp, ym = x + a, x - a, y + b, y - b
-    r_pp, r_pm = np.hypot(xp, yp), np.hypot(xp, ym)
-    r_mp, r_mm = np.hypot(xm, yp), np.hypot(xm, ym)
-    return (xp * np.log((yp + r_pp) / (ym + r_pm)) + yp * np.log((xp + r_pp) / (xm + r_mp))
-            + xm * np.log((ym + r_mm) / (yp + r_mp)) + ym * np.log((xm + r_mm) / (xp + r_pm)))
+    return _term(xp, yp, ym) + _term(yp, xp, xm) + _term(xm, ym, yp) + _term(ym, xm, xp)
 
 
 @attrs.frozen

@@ -12,7 +12,9 @@ q_jk = c_s delta_jk^(10/9) with c_s = c_L / n_s, c_L = 35948 L_we^(8/9) [N, mm] 
 roller between both raceways; the roller load is Q_j = sum_k q_jk and delta_r balances
 F_r = sum_j Q_j cos(phi_j) (a monotone equation in delta_r, solved by bracketing). The misalignment is
 imposed (a shaft deflection or a housing error), and the moment the laminae then exert,
-M = sum_j cos(phi_j) sum_k q_jk x_k, is reported.
+M = sum_j cos(phi_j) sum_k q_jk x_k, is reported. The ring moves along the load line only: a roller layout
+that is not symmetric about it leaves sum_j Q_j sin(phi_j) unbalanced (small for Z >= 10), and without a radial
+load delta_r stays 0, so a preloaded and tilted bearing carries a small radial reaction then.
 
 ISO/TS 16281's default profile, when the real one is unknown, is the logarithmic
 P(x) = 0.00035 D_we ln[1 / (1 - (2x/L_we)^2)] for L_we <= 2.5 D_we; longer rollers are straight in the

@@ -18,11 +18,10 @@ the raceway. Profiles (:class:`RollerProfile`):
 
 The slicing model (ISO/TS 16281:2008's laminae) cuts the contact into n slices of width l/n that each
 carry q_k = K_s max(delta - c_k + theta y_k, 0)^(10/9) without interaction, with K_s = K_l w/l the slice's share
-(width w = l/n) of the whole contact's stiffness after Palmgren (inner and outer contact in series,
-delta = 2 x 3.84e-5 Q^0.9 / l^0.8 [mm, N, mm]: the law of
-:func:`camcontact.contact.load_distribution.line_contact_stiffness`), so that an aligned straight roller
-approaches by Palmgren's delta whatever the number of slices (applying the law to each slice's own width
-would scale the approach by n^(-0.1));
+(width w = l/n) of the stiffness of the one roller-raceway contact after Palmgren, delta = 3.81 (2/(pi E'))^0.9
+Q^0.9 / l^0.8 (:func:`camcontact.contact.hertz_line.line_approach`, ``"palmgren"``: 3.84e-5 Q^0.9 / l^0.8
+[mm, N, mm] for steel), so that an aligned straight roller approaches by Palmgren's delta whatever the number
+of slices (applying the law to each slice's own width would scale the approach by n^(-0.1));
 delta follows from sum q_k = Q; each slice's Hertz pressure p_k = sqrt(q_k E' / (2 pi R w)) (Johnson 1985 §4.3
 with E' = 2/[(1 - nu1^2)/E1 + (1 - nu2^2)/E2]). It ignores how
 one slice's pressure deforms its neighbours, so it sees no edge stress on a straight roller: the
@@ -44,11 +43,10 @@ import attrs
 import numpy as np
 from scipy.optimize import brentq
 
-from ..errors import InputError
+from ..errors import ConvergenceError, InputError
 from .dry_contact import DryContact, solve_dry_contact
-from .hertz_line import hertz_line
+from .hertz_line import hertz_line, line_approach
 from .lamina_load_distribution import iso_default_profile
-from .load_distribution import line_contact_stiffness
 
 __all__ = ["PROFILE_KINDS", "LaminaResult", "RollerProfile", "roller_dry_contact", "solve_laminae"]
 
@@ -150,7 +148,8 @@ def solve_laminae(load: float, length: float, R: float, E_reduced: float, profil
     width = length / laminae
     y = (np.arange(laminae) + 0.5) * width - 0.5 * length
     gap = profile.drop(y, length, E_reduced, R) - misalignment * y
-    stiffness = line_contact_stiffness(length) * width / length  # the slice's share of the whole contact's
+    # the slice's share of the contact's Palmgren stiffness: Q = K delta^(10/9), K = (delta at 1 N)^(-10/9)
+    stiffness = line_approach("palmgren", E_reduced=E_reduced, force=1.0, length=length) ** (-10.0 / 9.0) * width / length
 
     def carried(delta: float) -> float:
         return float(np.sum(stiffness * np.maximum(delta - gap, 0.0) ** (10.0 / 9.0))) - load
@@ -171,19 +170,25 @@ def roller_dry_contact(load: float, length: float, R: float, E_reduced: float, p
                        misalignment: float = 0.0, cells_along: int = 200, cells_across: int = 32,
                        tolerance: float = 1e-8) -> DryContact:
     """The numerical dry contact of the roller on its raceway (half-space, :func:`solve_dry_contact`): the
-    separation x^2/(2R) + c(y) - theta y over |x| <= 2 b_Hertz (b under the mean load per length; widened until
-    the contact stays clear of the grid's sides) and the roller's length |y| <= l/2 in ``cells_across`` x
+    separation x^2/(2R) + c(y) - theta y over |x| <= 2 b_Hertz (b under the mean load per length; widened at the
+    same cell size until the contact stays clear of the grid's sides, up to 1.6^3 = 4.1 times, else a
+    ConvergenceError) and the roller's length |y| <= l/2 in ``cells_across`` x
     ``cells_along`` cells; pressure along the roller with its edge stress."""
     _check(load, length, R, E_reduced, "roller dry contact")
     half = 2.0 * hertz_line(load / length, R, E_reduced).b
     y = (np.arange(cells_along) + 0.5) * (length / cells_along) - 0.5 * length
     drop = profile.drop(y, length, E_reduced, R) - misalignment * y
+    across = cells_across
     for _ in range(4):
-        x = (np.arange(cells_across) + 0.5) * (2.0 * half / cells_across) - half
+        x = (np.arange(across) + 0.5) * (2.0 * half / across) - half
         result = solve_dry_contact(x, y, x[None, :] ** 2 / (2.0 * R) + drop[:, None], load, E_reduced,
                                    tolerance=tolerance)
         edge = max(float(result.pressure[:, 0].max()), float(result.pressure[:, -1].max()))
         if edge <= 1e-3 * result.p_max:
             return result
-        half *= 1.6  # the contact reached the grid's side (a concentrated load widens it): widen the grid
-    return result
+        # the contact reached the grid's side (a concentrated load widens it): widen the grid, same cell size
+        half *= 1.6
+        across = int(math.ceil(1.6 * across))
+    raise ConvergenceError(f"roller dry contact: the contact still reaches the sides of a grid {2e6 * half / 1.6:.4g} um "
+                           f"wide (load {load:g} N, misalignment {misalignment:g} rad): the load concentrates too much "
+                           "for this model; reduce the misalignment or check the profile")

@@ -4,7 +4,8 @@
 :func:`compare_roller_profiles` takes the contact in units (load, effective length, reduced radius along
 rolling, the two materials or E') and a list of :class:`~camcontact.contact.roller_profile.RollerProfile`;
 it returns a :class:`ProfileComparison` with one summary row per profile (pressure in the middle and its
-peak by both methods, the edge-stress ratio peak/middle of the numerical solution, where the peak sits),
+peak by both methods, the edge-stress ratio peak/middle of the numerical solution, where the peak sits; the
+ratio is NaN where a tilt unloads the middle, ``middle loaded`` False),
 the pressure along the roller per profile and method (``along_frame``) and the laminae (``lamina_frame``);
 :meth:`ProfileComparison.plot` draws the pressure along the roller, numerical solid and laminae dashed,
 against the Hertz pressure of the mean load per length.
@@ -108,7 +109,8 @@ def compare_roller_profiles(load, length, reduced_radius, profiles: Sequence[Rol
             "p_max numerical [MPa]": 1e-6 * float(p_num[k]), "y at p_max numerical [mm]": 1e3 * float(num.y[k]),
             "p_max laminae [MPa]": 1e-6 * float(lam.pressure[j]), "y at p_max laminae [mm]": 1e3 * float(lam.y[j]),
             "numerical at the laminae's peak [MPa]": 1e-6 * float(np.interp(lam.y[j], num.y, p_num)),
-            "edge stress ratio [-]": float(p_num[k] / middle_num), "dry contact iterations [-]": num.iterations,
+            "edge stress ratio [-]": float(p_num[k] / middle_num) if middle_num > 0.0 else float("nan"),
+            "middle loaded": middle_num > 0.0, "dry contact iterations [-]": num.iterations,
         })
         along.append(pd.DataFrame({"profile": profile.label, "method": "numerical", "y [mm]": 1e3 * num.y,
                                    "pressure [MPa]": 1e-6 * p_num}))
