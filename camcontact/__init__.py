@@ -10,8 +10,9 @@ use of a model family) and compiles no numba kernel.
 from . import registry, step_graph
 from .analysis import Analysis, Result
 from .components import (BallBearing, BallConeCVT, Body, Cam, CamFollower, CylindricalRollerBearing, Follower,
-                         LineContact, LoadedBallBearing, LoadedBallConeCVT, LoadedBearing, Lubricant, Material,
-                         PointContact, RacewayContact, SphericalRollerBearing, ValveTrain)
+                         LineContact, LoadedBallBearing, LoadedBallConeCVT, LoadedBearing,
+                         LoadedCylindricalRollerBearing, Lubricant, Material, PointContact, RacewayContact,
+                         SphericalRollerBearing, ValveTrain)
 from .errors import ConvergenceError, ConvergenceWarning, InputError, PluginLoadWarning, UnknownModelError
 from .units import Q_, ureg
 
@@ -64,6 +65,7 @@ __all__ = [
     "LoadedBallBearing",
     "LoadedBallConeCVT",
     "LoadedBearing",
+    "LoadedCylindricalRollerBearing",
     "Lubricant",
     "Material",
     "MotionProgram",

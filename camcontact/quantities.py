@@ -266,6 +266,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("L10r", "revolution_count", "Mrev", "basic reference rating life from the internal load distribution "
                                                "(ISO/TS 16281; shown in millions)"),
         _q("L10rh", "s", "h", "basic reference rating life in operating hours (ISO/TS 16281)"),
+        _q("x_q_max", "m", "mm", "axial position of the roller's most loaded lamina (0: the middle)"),
+        _q("lamina_moment", "N*m", "N*m", "moment the laminae exert on the rings (misalignment)"),
         # ball-cone CVT (scenes.ball_cone_cvt); _in / _out: the input / output cone contact
         _q("tilt", "rad", "deg", "ball tilt beta"),
         _q("reduction_ratio", "", "", "omega_in / omega_out"),

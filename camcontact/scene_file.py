@@ -43,7 +43,10 @@ fields, with nested [contact.cam] (its ``program`` a table of ``segments``), [co
 :class:`~camcontact.components.SphericalRollerBearing`, its [contact.bearing.material]) and
 [contact.lubricant]; a ``ball_bearing`` scene's [contact] holds :class:`~camcontact.components.LoadedBallBearing`
 fields with [contact.bearing] (a :class:`~camcontact.components.BallBearing`, its [contact.bearing.material])
-and [contact.lubricant]. A ``ball_cone_cvt`` scene's [contact] holds
+and [contact.lubricant]; a ``cylindrical_roller_bearing`` scene's [contact] holds
+:class:`~camcontact.components.LoadedCylindricalRollerBearing` fields with [contact.bearing] (a
+:class:`~camcontact.components.CylindricalRollerBearing`, its [contact.bearing.material]) and [contact.lubricant].
+A ``ball_cone_cvt`` scene's [contact] holds
 :class:`~camcontact.components.LoadedBallConeCVT` fields with [contact.cvt] (a
 :class:`~camcontact.components.BallConeCVT`, its [contact.cvt.material] and [contact.cvt.lubricant]).
 """
@@ -67,11 +70,13 @@ from .components import (
     Body,
     Cam,
     CamFollower,
+    CylindricalRollerBearing,
     Follower,
     LineContact,
     LoadedBallBearing,
     LoadedBallConeCVT,
     LoadedBearing,
+    LoadedCylindricalRollerBearing,
     Lubricant,
     Material,
     PointContact,
@@ -112,7 +117,7 @@ def _motion_program(table: Any, where: str) -> Any:
 #: scene kind -> component class of the [contact] table (the scene component)
 _KINDS = {"line_contact": LineContact, "cam_follower": CamFollower, "raceway_contact": RacewayContact,
           "bearing": LoadedBearing, "ball_bearing": LoadedBallBearing, "ball_cone_cvt": LoadedBallConeCVT,
-          "point_contact": PointContact}
+          "point_contact": PointContact, "cylindrical_roller_bearing": LoadedCylindricalRollerBearing}
 #: nested tables: component class -> {field: component class, or a builder(table, where)}
 _NESTED: dict[type, dict[str, Any]] = {
     LineContact: {"body1": Body, "body2": Body, "lubricant": Lubricant},
@@ -126,6 +131,8 @@ _NESTED: dict[type, dict[str, Any]] = {
     SphericalRollerBearing: {"material": Material},
     LoadedBallBearing: {"bearing": BallBearing, "lubricant": Lubricant},
     BallBearing: {"material": Material},
+    LoadedCylindricalRollerBearing: {"bearing": CylindricalRollerBearing, "lubricant": Lubricant},
+    CylindricalRollerBearing: {"material": Material},
     LoadedBallConeCVT: {"cvt": BallConeCVT},
     BallConeCVT: {"material": Material, "lubricant": Lubricant},
 }

@@ -111,22 +111,34 @@ class CylindricalRollerBearing(Component):
     @property
     def inner_contact_radius(self) -> float:
         """Reduced radius along rolling of the roller on the inner ring [m]: (D_we/2)(1 - D_we/D_pw)."""
-        return 0.5 * self.si.roller_diameter * (1.0 - self.si.roller_diameter / self.d_m)
+        return self.contact_radii["inner"]
 
     def lamina_load_distribution(self, radial_load, misalignment="0 rad", laminae: int = 30):
         """Roller and lamina loads under F_r [force] with the misalignment [angle] (Quantities or strings) by
         :func:`camcontact.contact.lamina_load_distribution.solve_lamina_load_distribution`."""
+        Fr = si_value(to_quantity(radial_load, "[force]", where="lamina_load_distribution(radial_load)"))
+        tilt = si_value(to_quantity(misalignment, ANGLE, where="lamina_load_distribution(misalignment)"))
+        return self.lamina_load_distribution_si(Fr, tilt, laminae)
+
+    def lamina_load_distribution_si(self, radial_load: float, misalignment: float = 0.0, laminae: int = 30):
+        """:meth:`lamina_load_distribution` for SI values [N, rad] (the scene's entry)."""
         from ..contact.geometry import reduced_modulus
         from ..contact.lamina_load_distribution import solve_lamina_load_distribution
 
-        Fr = si_value(to_quantity(radial_load, "[force]", where="lamina_load_distribution(radial_load)"))
-        tilt = si_value(to_quantity(misalignment, ANGLE, where="lamina_load_distribution(misalignment)"))
         m = self.material
         E = reduced_modulus(m.si.E, m.nu, m.si.E, m.nu) if m is not None else math.nan
         profile, length, R = self.roller_profile, self.si.roller_length, self.inner_contact_radius
-        return solve_lamina_load_distribution(Fr, roller_count=self.roller_count, roller_length=length,
+        return solve_lamina_load_distribution(radial_load, roller_count=self.roller_count, roller_length=length,
                                               profile_drop=lambda x: profile.drop(x, length, E, R),
-                                              clearance=self.si.radial_clearance, misalignment=tilt, laminae=laminae)
+                                              clearance=self.si.radial_clearance, misalignment=misalignment,
+                                              laminae=laminae)
+
+    @property
+    def contact_radii(self) -> dict[str, float]:
+        """Reduced radii along rolling [m] of the inner and outer roller-raceway contacts: (D_we/2)(1 -/+ D_we/D_pw)."""
+        gamma = self.si.roller_diameter / self.d_m
+        half = 0.5 * self.si.roller_diameter
+        return {"inner": half * (1.0 - gamma), "outer": half * (1.0 + gamma)}
 
     def reference_life(self, radial_load, misalignment="0 rad", *, inner_rotates: bool = True, laminae: int = 30,
                        edge_factor: bool | None = None) -> dict:

@@ -11,16 +11,15 @@ from __future__ import annotations
 
 import attrs
 
-from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, non_negative, number_field,
-                     positive, quantity_field, text)
+from ..units import Quantity, instance_of, non_negative, positive, quantity_field, text
 from .ball_bearing import BallBearing
-from .lubricant import Lubricant
+from .bearing_service import BearingService
 
 __all__ = ["LoadedBallBearing"]
 
 
 @attrs.frozen(kw_only=True)
-class LoadedBallBearing(Component):
+class LoadedBallBearing(BearingService):
     """A ball bearing under load, speed and lubrication.
 
     Parameters
@@ -68,10 +67,4 @@ class LoadedBallBearing(Component):
     radial_load: Quantity = quantity_field("[force]", validators=[non_negative("N")])
     axial_load: Quantity = quantity_field("[force]", default="0 N")
     moment: Quantity = quantity_field("[force] * [length]", optional=True)
-    speed: Quantity = quantity_field("1/[time]", default="0 rpm")
-    outer_speed: Quantity = quantity_field("1/[time]", default="0 rpm")
-    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Lubricant)))
-    temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
-    reliability: float = number_field(default=90.0, validators=[in_range(90.0, 99.95)])
-    contamination: float = number_field(optional=True, validators=[in_range(0.0, 1.0, lower_inclusive=False)])
     contact_stress_limit: Quantity = quantity_field("[pressure]", default="4.2 GPa", validators=[positive("Pa")])

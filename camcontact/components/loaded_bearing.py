@@ -11,16 +11,15 @@ from __future__ import annotations
 
 import attrs
 
-from ..units import (Component, Quantity, above_absolute_zero, in_range, instance_of, non_negative, number_field,
-                     quantity_field, text)
-from .lubricant import Lubricant
+from ..units import Quantity, in_range, instance_of, non_negative, number_field, quantity_field, text
+from .bearing_service import BearingService
 from .spherical_roller_bearing import SphericalRollerBearing
 
 __all__ = ["LoadedBearing"]
 
 
 @attrs.frozen(kw_only=True)
-class LoadedBearing(Component):
+class LoadedBearing(BearingService):
     """A spherical roller bearing under load, speed and lubrication.
 
     Parameters
@@ -54,11 +53,5 @@ class LoadedBearing(Component):
     bearing: SphericalRollerBearing = attrs.field(validator=instance_of(SphericalRollerBearing))
     radial_load: Quantity = quantity_field("[force]", validators=[non_negative("N")])
     axial_load: Quantity = quantity_field("[force]", default="0 N")
-    speed: Quantity = quantity_field("1/[time]", default="0 rpm")
-    outer_speed: Quantity = quantity_field("1/[time]", default="0 rpm")
-    lubricant: Lubricant | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Lubricant)))
-    temperature: Quantity = quantity_field("[temperature]", optional=True, validators=[above_absolute_zero()])
-    reliability: float = number_field(default=90.0, validators=[in_range(90.0, 99.95)])
-    contamination: float = number_field(optional=True, validators=[in_range(0.0, 1.0, lower_inclusive=False)])
     slide_roll_ratio: float = number_field(optional=True, validators=[in_range(0.0, 2.0, lower_inclusive=False,
                                                                                 upper_inclusive=False)])

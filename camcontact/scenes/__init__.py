@@ -37,4 +37,5 @@ The analysis checks the graph before running (a missing input is an InputError w
 runs only the needed steps and records each step's model and wall time.
 """
 
-from . import ball_bearing, ball_cone_cvt, bearing, cam_follower, line_contact, point_contact, raceway_contact  # noqa: F401
+from . import (ball_bearing, ball_cone_cvt, bearing, cam_follower, cylindrical_roller_bearing, line_contact,  # noqa: F401
+               point_contact, raceway_contact)

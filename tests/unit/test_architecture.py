@@ -56,7 +56,8 @@ def test_the_private_import_check_finds_one():
 def test_scene_builders_are_short():
     builders = {cls: f for cls, f in scene_builders().items() if f.__module__.startswith("camcontact.scenes.")}
     assert {cls.__name__ for cls in builders} == {"LineContact", "CamFollower", "RacewayContact", "LoadedBearing",
-                                                  "LoadedBallConeCVT", "PointContact", "LoadedBallBearing"}
+                                                  "LoadedBallConeCVT", "PointContact", "LoadedBallBearing",
+                                                  "LoadedCylindricalRollerBearing"}
     for function in builders.values():
         lines = inspect.getsource(function).count("\n")
         assert lines <= BUILDER_LINES, f"{function.__qualname__} has {lines} lines"
