@@ -38,6 +38,7 @@ _NAN_WHEN = {
                                           "a_transverse")
        for race in ("inner", "outer")},
     "contact_angle": _UNLOADED,
+    "x_q_max": _UNLOADED,
     # a cam follower that has left the cam (contact_open) has no contact, so no film
     **{q: (("contact_open", True),) for q in ("h_c", "h_min", "Lambda_c", "Lambda_min", "h_c_isothermal",
                                               "h_min_isothermal")},

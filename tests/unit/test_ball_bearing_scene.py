@@ -73,6 +73,13 @@ def test_scene_reports_per_ball_and_summary():
     assert "hamrock_dowson (inner raceway" in result["film_validity"]
 
 
+def test_every_nan_has_its_reason_beside_it():
+    from camcontact.report import unexplained_values
+
+    result = cc.Analysis(loaded()).run()
+    assert unexplained_values(result.to_frame()) == [] and unexplained_values(result.summary_frame()) == []
+
+
 def test_only_the_steps_asked_for_run():
     result = cc.Analysis(loaded(lubricant=None, temperature=None), outputs=["Q_max", "p_h_max"]).run()
     ran = {record.step for record in result.records}

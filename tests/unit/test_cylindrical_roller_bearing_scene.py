@@ -34,6 +34,13 @@ def test_report_per_roller_and_lives():
                                                                             result["Lambda_outer"]])))
 
 
+def test_every_nan_has_its_reason_beside_it():
+    from camcontact.report import unexplained_values
+
+    result = cc.Analysis(scene()).run()
+    assert unexplained_values(result.to_frame()) == [] and unexplained_values(result.summary_frame()) == []
+
+
 def test_misalignment_lowers_l10r_only():
     aligned = cc.Analysis(scene(), outputs=["L10", "L10r", "lamina_moment"]).run()
     tilted = cc.Analysis(scene(misalignment="4 arcmin"), outputs=["L10", "L10r", "lamina_moment"]).run()
