@@ -29,7 +29,7 @@ import numpy as np
 
 from ..errors import InputError
 
-__all__ = ["LineHertz", "hertz_line", "line_approach"]
+__all__ = ["LineHertz", "hertz_line", "hertz_line_arrays", "line_approach"]
 
 
 @attrs.frozen
@@ -47,6 +47,13 @@ class LineHertz:
         """Hertz pressure p(x) [Pa] at positions x [m] (zero outside |x| < b)."""
         xi = np.asarray(x, dtype=float) / self.b
         return self.p_h * np.sqrt(np.clip(1.0 - xi * xi, 0.0, None))
+
+
+def hertz_line_arrays(w, R: float, E_reduced: float) -> tuple[np.ndarray, np.ndarray]:
+    """(b, p_h) [m, Pa] of line contacts under the loads per length ``w`` [N/m] (an array, >= 0: 0 gives 0), radius R
+    [m] and E' [Pa]: the formulas of :func:`hertz_line` elementwise, for slices and laminae."""
+    w = np.asarray(w, dtype=float)
+    return np.sqrt(8.0 * w * R / (math.pi * E_reduced)), np.sqrt(w * E_reduced / (2.0 * math.pi * R))
 
 
 def hertz_line(w: float, R: float, E_reduced: float) -> LineHertz:

@@ -36,6 +36,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ..errors import InputError
+from .hertz_line import hertz_line_arrays
 
 __all__ = ["ISO_LAMINA_STIFFNESS", "LaminaLoadDistribution", "iso_default_profile", "solve_lamina_load_distribution"]
 
@@ -80,6 +81,15 @@ class LaminaLoadDistribution:
     def loaded(self) -> np.ndarray:
         """Rollers in contact (Q > 0)."""
         return self.Q > 0.0
+
+    @property
+    def load_per_length(self) -> np.ndarray:
+        """Lamina load per unit length [N/m], shape (Z, n_s)."""
+        return self.q / (self.x[1] - self.x[0])
+
+    def pressure(self, R: float, E_reduced: float) -> np.ndarray:
+        """Hertz pressure of every lamina [Pa], (Z, n_s), as a line contact of reduced radius R [m] and E' [Pa]."""
+        return hertz_line_arrays(self.load_per_length, R, E_reduced)[1]
 
     def roller_frame(self):
         """One row per roller: azimuth [deg], Q [N], loaded, laminae in contact, the largest lamina load [N] and

@@ -45,7 +45,7 @@ from scipy.optimize import brentq
 
 from ..errors import ConvergenceError, InputError
 from .dry_contact import DryContact, solve_dry_contact
-from .hertz_line import hertz_line, line_approach
+from .hertz_line import hertz_line, hertz_line_arrays, line_approach
 from .lamina_load_distribution import iso_default_profile
 
 __all__ = ["PROFILE_KINDS", "LaminaResult", "RollerProfile", "roller_dry_contact", "solve_laminae"]
@@ -162,7 +162,7 @@ def solve_laminae(load: float, length: float, R: float, E_reduced: float, profil
     approach = delta - gap
     q = stiffness * np.maximum(approach, 0.0) ** (10.0 / 9.0)
     per_length = q / width
-    pressure = np.sqrt(per_length * E_reduced / (2.0 * math.pi * R))  # Hertz p_h = sqrt(w E' / (2 pi R))
+    pressure = hertz_line_arrays(per_length, R, E_reduced)[1]
     return LaminaResult(y=y, load=q, load_per_length=per_length, pressure=pressure, approach=approach, delta=delta)
 
 

@@ -45,7 +45,7 @@ from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.ball_bearing import (ball_bearing_equivalent_load, ball_films, ball_hertz, ball_kinematics, ball_loads,
                                   ball_reference_life, ball_static_safety, ball_subsurface)
 from ..steps.contact import RACES
-from ..steps.film import bearing_lubrication, film_parameter, films_of, resolve_film_model
+from ..steps.film import bearing_lubrication, films_of, raceway_lambda_steps, resolve_film_model
 from ..steps.life import modified_rating_life, rating_life
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from .ball_bearing_plots import plot_ball_bearing
@@ -121,9 +121,7 @@ def build_ball_bearing(scene: LoadedBallBearing, *, models: Mapping[str, Any], e
         lubricant_step(scene.lubricant, scene.si.temperature),
         Step.of(ball_films, provides=(*(f"{q}_{race}" for q in films for race in RACES), "h_min_bearing",
                                       "film_validity", "film_valid")),
-        *(Step.of(film_parameter, name=f"lambda_{race}", rename={"h": f"{basis}_{race}", "sigma1": "sigma",
-                                                                "sigma2": "sigma", "Lambda": f"Lambda_{race}"})
-          for race in RACES),
+        *raceway_lambda_steps(basis),
         Step.of(bearing_lubrication), Step.of(ball_bearing_equivalent_load), Step.of(ball_static_safety),
         Step.of(rating_life), Step.of(modified_rating_life), Step.of(ball_reference_life),
     ]

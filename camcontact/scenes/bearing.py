@@ -71,8 +71,8 @@ from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.bearing_friction import palmgren_friction_moment, roller_rolling_resistance, skf_friction_moment
 from ..steps.contact import RACES, roller_hertz
 from ..steps.ehl_friction import ROLLER_MIXED_OUTPUTS, ehl_friction_inputs, fluid_traction_model, roller_mixed
-from ..steps.film import (bearing_lubrication, film_parameter, films_of, inlet_thermal_correction, resolve_film_model,
-                          roller_films, roller_thermal_films)
+from ..steps.film import (bearing_lubrication, films_of, inlet_thermal_correction, raceway_lambda_steps,
+                          resolve_film_model, roller_films, roller_thermal_films)
 from ..steps.forces import load_distribution
 from ..steps.friction import roller_fluid_friction, roller_friction
 from ..steps.kinematics import bearing_kinematics, bearing_surface_speeds
@@ -211,9 +211,7 @@ def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: f
         Step.of(load_distribution), Step.of(bearing_kinematics), Step.of(roller_hertz),
         Step.of(most_loaded_subsurface),
         lubricant_step(scene.lubricant, scene.si.temperature), *film_steps(film_model, "thermal" in effects),
-        *(Step.of(film_parameter, name=f"lambda_{race}", rename={"h": f"{basis}_{race}", "sigma1": "sigma",
-                                                                "sigma2": "sigma", "Lambda": f"Lambda_{race}"})
-          for race in RACES),
+        *raceway_lambda_steps(basis),
         *([Step.of(roller_mixed)] if mixed else []),
         Step.of(bearing_lubrication), friction_step(models.get("friction"), mixed), Step.of(bearing_equivalent_load),
         Step.of(rating_life), Step.of(modified_rating_life), *moment_steps(scene), Step.of(roller_rolling_resistance),

@@ -33,7 +33,7 @@ from ..components.loaded_cylindrical_roller_bearing import LoadedCylindricalRoll
 from ..contact.geometry import reduced_modulus
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import RACES
-from ..steps.film import bearing_lubrication, film_parameter, films_of, resolve_film_model, roller_films
+from ..steps.film import bearing_lubrication, films_of, raceway_lambda_steps, resolve_film_model, roller_films
 from ..steps.kinematics import bearing_kinematics
 from ..steps.life import modified_rating_life, rating_life
 from ..steps.lubricant import lubricant_inputs, lubricant_step
@@ -95,9 +95,7 @@ def build_cylindrical_roller_bearing(scene: LoadedCylindricalRollerBearing, *, m
         Step.of(lamina_loads), Step.of(bearing_kinematics), Step.of(lamina_hertz),
         lubricant_step(scene.lubricant, scene.si.temperature),
         Step.of(roller_films, provides=(*(f"{q}_{race}" for q in films for race in RACES), "h_min_bearing")),
-        *(Step.of(film_parameter, name=f"lambda_{race}", rename={"h": f"{basis}_{race}", "sigma1": "sigma",
-                                                                "sigma2": "sigma", "Lambda": f"Lambda_{race}"})
-          for race in RACES),
+        *raceway_lambda_steps(basis),
         Step.of(bearing_lubrication), Step.of(radial_equivalent_load), Step.of(rating_life),
         Step.of(modified_rating_life), Step.of(lamina_reference_life),
     ]

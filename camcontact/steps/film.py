@@ -27,13 +27,14 @@ from ..models.base import FilmModel
 from ..models.film_line import LINE_INPUTS
 from ..models.film_point import POINT_INPUTS
 from ..models.film_thermal import inlet_heating_factor, slide_roll_measure, thermal_loading
-from ..step_graph import step
+from ..step_graph import Step, step
 from .contact import RACES
 
 __all__ = [
     "FILMS", "ball_cone_films", "bearing_lubrication", "check_thermal_data", "composite_roughness_step",
     "ehl_groups", "film_parameter", "films_of", "inlet_thermal_correction", "isothermal_films", "line_film", "point_film",
-    "lubrication_regime_step", "model_reads", "raceway_roughness", "resolve_film_model", "roller_films", "roller_thermal_films",
+    "lubrication_regime_step", "model_reads", "raceway_lambda_steps", "raceway_roughness", "resolve_film_model",
+    "roller_films", "roller_thermal_films",
     "thermal_films",
 ]
 
@@ -270,6 +271,14 @@ def roller_films(film_model, Q, E_reduced, u_m, eta0, alpha, piezoviscosity, lub
     values = np.concatenate([out[f"{basis}_{race}"] for race in RACES])
     out["h_min_bearing"] = float(np.nanmin(values)) if np.any(np.isfinite(values)) else float("nan")
     return out
+
+
+def raceway_lambda_steps(basis: str) -> list:
+    """The steps ``lambda_inner`` and ``lambda_outer`` of a bearing scene: :func:`film_parameter` of the film
+    ``<basis>_<race>`` (h_min or h_c) with the bearing's roughness ``sigma`` on both surfaces, as ``Lambda_<race>``."""
+    return [Step.of(film_parameter, name=f"lambda_{race}", rename={"h": f"{basis}_{race}", "sigma1": "sigma",
+                                                                  "sigma2": "sigma", "Lambda": f"Lambda_{race}"})
+            for race in RACES]
 
 
 @step("lubrication", provides=("contact_regime", "Lambda_bearing"))

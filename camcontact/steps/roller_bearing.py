@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from ..contact.hertz_line import hertz_line_arrays
 from ..models.iso_ts16281_roller import roller_reference_rating_life
 from ..step_graph import step
 from .contact import RACES
@@ -43,13 +44,10 @@ def lamina_hertz(lamina_loads, E_reduced, contact_radii):
     under its load per length, the rolling-direction radii ``contact_radii[race]`` [m]) with the half-width there
     [m], NaN for unloaded rollers, and the bearing's peak pressure."""
     result = lamina_loads
-    width = result.x[1] - result.x[0]
-    w = result.q.max(axis=1) / width
+    w = result.load_per_length.max(axis=1)
     out = {}
     for race in RACES:
-        R = contact_radii[race]
-        p = np.sqrt(w * E_reduced / (2.0 * math.pi * R))
-        b = np.sqrt(8.0 * w * R / (math.pi * E_reduced))
+        b, p = hertz_line_arrays(w, contact_radii[race], E_reduced)
         out[f"p_h_{race}"] = np.where(result.loaded, p, np.nan)
         out[f"b_{race}"] = np.where(result.loaded, b, np.nan)
     peaks = np.concatenate([out[f"p_h_{race}"] for race in RACES])
