@@ -35,7 +35,7 @@ _UNLOADED = (("loaded", False), ("contact_regime", "unloaded"))
 _NAN_WHEN = {
     **{f"{q}_{race}": _UNLOADED for q in ("b", "p_h", "h_c", "h_min", "Lambda", "flash_temperature",
                                           "rolling_resistance", "asperity_load_fraction", "h_c_mixed", "a_rolling",
-                                          "a_transverse")
+                                          "a_transverse", "contact_length")
        for race in ("inner", "outer")},
     "contact_angle": _UNLOADED,
     "x_q_max": _UNLOADED,
@@ -199,6 +199,10 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("p_h_inner", "Pa", "MPa", "Hertz pressure at the inner raceway"),
         _q("b_outer", "m", "um", "Hertz half-width at the outer raceway"),
         _q("p_h_outer", "Pa", "MPa", "Hertz pressure at the outer raceway"),
+        _q("contact_length_inner", "m", "mm", "length of the inner raceway contact along the roller (loaded laminae)"),
+        _q("contact_length_outer", "m", "mm", "length of the outer raceway contact along the roller (loaded laminae)"),
+        _q("edge_loaded_inner", None, None, "True where the inner contact reaches the roller's ends"),
+        _q("edge_loaded_outer", None, None, "True where the outer contact reaches the roller's ends"),
         _q("h_c_inner", "m", "um", "central film at the inner raceway"),
         _q("h_min_inner", "m", "um", "minimum film at the inner raceway"),
         _q("h_c_outer", "m", "um", "central film at the outer raceway"),

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import attrs
 
-from ..units import Quantity, in_range, instance_of, non_negative, number_field, quantity_field, text
+from ..units import Quantity, in_range, instance_of, integer_in_range, non_negative, number_field, quantity_field, text
 from .bearing_service import BearingService
 from .spherical_roller_bearing import SphericalRollerBearing
 
@@ -46,6 +46,9 @@ class LoadedBearing(BearingService):
     slide_roll_ratio : float, optional
         (u_ring - u_roller)/u_m at every raceway contact (0 < s < 2) for the Kelley friction and the
         flash temperature; pure rolling (no value) has no sliding friction in that correlation.
+    laminae : int
+        Laminae per raceway contact (>= 30, ISO/TS 16281; default 30) when the bearing's conformities make the
+        contacts finite lines (:attr:`SphericalRollerBearing.conformity_inner`).
     name : str
     """
 
@@ -55,3 +58,4 @@ class LoadedBearing(BearingService):
     axial_load: Quantity = quantity_field("[force]", default="0 N")
     slide_roll_ratio: float = number_field(optional=True, validators=[in_range(0.0, 2.0, lower_inclusive=False,
                                                                                 upper_inclusive=False)])
+    laminae: int = attrs.field(default=30, validator=integer_in_range(30, 1000))

@@ -8,6 +8,18 @@ gamma = D_w cos(alpha) / d_m (Harris & Kotzalas 2007, ch. 2 and 7):
     inner contact  R_x = (D_w / 2)(1 - gamma) (roller against a convex raceway)
     outer contact  R_x = (D_w / 2)(1 + gamma) (roller against a concave raceway)
 
+Across the rolling direction the barrel roller (contour radius R_r) runs in raceways of contour radius r_race
+slightly larger: the conformity f = R_r / r_race < 1 (Harris & Kotzalas 2007, ch. 2, the osculation of the roller
+to its raceway). The outer raceway is a sphere about the bearing centre, r_o = d_m / (2 cos alpha) + D_w / 2 (the
+contact normal through the roller's middle passes through that centre), so f_o fixes R_r = f_o r_o and
+f_i the inner raceway's contour radius r_i = R_r / f_i. Across rolling each contact then has the radius
+R_y = R_r / (1 - f) (1/R_y = 1/R_r - 1/r_race): the raceway gap grows as y^2 / (2 R_y) from the roller's middle, so
+the contact is as long as the load makes it, and reaches the roller's ends (l_we) only under a heavy load - the
+finite line it really is. ISO/TS 16281:2008 slices such a contact into laminae with this gap as the profile
+(:meth:`SphericalRollerBearing.raceway_profiles`, :func:`camcontact.steps.raceway_laminae.conformal_roller_hertz`).
+Without the conformities (catalogues do not print them) the contacts are ideal lines of length l_we, which
+underestimates the pressure of a lightly loaded roller.
+
 The ratings C (dynamic) and C0 (static) and, if known, the fatigue load limit P_u come from the
 catalogue; :meth:`SphericalRollerBearing.load_distribution` distributes radial and axial loads
 over the rollers (:mod:`camcontact.contact.load_distribution`).
@@ -20,8 +32,8 @@ import math
 import attrs
 
 from ..errors import InputError
-from ..units import (ANGLE, Component, Quantity, in_range, instance_of, integer_in_range, non_negative, positive,
-                     quantity_field, text)
+from ..units import (ANGLE, Component, Quantity, in_range, instance_of, integer_in_range, non_negative, number_field,
+                     positive, quantity_field, text)
 from .bearing_envelope import check_bearing_envelope, pitch_diameter_of
 from .material import Material
 
@@ -29,6 +41,9 @@ __all__ = ["SphericalRollerBearing"]
 
 #: the most rollers per row a bearing may have
 MAX_ROLLERS = 1000
+#: a conformity R_r / r_race: below 1 (equal radii would make the contact as long as the roller at any load) and above
+#: 0.5 (a roller's contour radius half its raceway's is a ball in a groove, not a spherical roller bearing)
+_CONFORMITY = in_range(0.5, 1.0, lower_inclusive=False, upper_inclusive=False)
 
 
 def _series(instance, attribute, value):
@@ -81,6 +96,10 @@ class SphericalRollerBearing(Component):
         Summit density η [1/length²] and radius β [length] (> 0) of the composite roughness of the raceway
         contact for the ``mixed`` effect (Greenwood–Tripp), as :class:`~camcontact.components.LineContact`'s
         (defaults there: η β σ = σ/β = 0.05, orders of magnitude, not data).
+    conformity_inner, conformity_outer : float, optional
+        f_i, f_o = R_r / r_race [-] (0.5 < f < 1, both or neither; module docstring): the roller's contour radius over
+        the raceway's, across the rolling direction. With them the raceway contacts are finite lines sliced into
+        laminae; without them, ideal lines of length l_we.
     name : str
     """
 
@@ -106,12 +125,17 @@ class SphericalRollerBearing(Component):
     series: str | None = attrs.field(default=None, validator=_series)
     asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
     asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    conformity_inner: float | None = number_field(optional=True, validators=[_CONFORMITY])
+    conformity_outer: float | None = number_field(optional=True, validators=[_CONFORMITY])
 
     def __attrs_post_init__(self) -> None:
         si, where = self.si, f"SphericalRollerBearing {self.designation!r}"
         check_bearing_envelope(where, self, "roller_diameter", "rollers_per_row")
         if not si.roller_length <= si.width:
             raise InputError(f"{where}: roller_length = {self.roller_length} exceeds the width {self.width}")
+        if (self.conformity_inner is None) != (self.conformity_outer is None):
+            raise InputError(f"{where}: conformity_inner = {self.conformity_inner!r}, conformity_outer = "
+                             f"{self.conformity_outer!r}; give both (R_r / r_race of each raceway) or neither")
 
     # ------------------------------------------------------------------ derived geometry (SI)
     @property
@@ -130,6 +154,42 @@ class SphericalRollerBearing(Component):
         (1/R = 1/R_roller ± 1/R_race; the outer raceway is concave)."""
         half = 0.5 * self.si.roller_diameter
         return {"inner": half * (1.0 - self.gamma), "outer": half * (1.0 + self.gamma)}
+
+    @property
+    def conformal(self) -> bool:
+        """Whether the conformities are given (the contacts are finite lines, module docstring)."""
+        return self.conformity_outer is not None
+
+    @property
+    def outer_raceway_radius(self) -> float:
+        """Radius r_o [m] of the spherical outer raceway, d_m / (2 cos alpha) + D_w / 2."""
+        return 0.5 * self.d_m / math.cos(self.si.contact_angle) + 0.5 * self.si.roller_diameter
+
+    @property
+    def roller_contour_radius(self) -> float | None:
+        """The roller's contour radius R_r = f_o r_o [m] (None without the conformities)."""
+        return self.conformity_outer * self.outer_raceway_radius if self.conformal else None
+
+    @property
+    def axial_radii(self) -> dict[str, float] | None:
+        """Reduced radii across rolling [m] of the inner and outer contact, R_y = R_r / (1 - f) (None without the
+        conformities)."""
+        if not self.conformal:
+            return None
+        R_r = self.roller_contour_radius
+        return {"inner": R_r / (1.0 - self.conformity_inner), "outer": R_r / (1.0 - self.conformity_outer)}
+
+    def raceway_profiles(self) -> dict | None:
+        """The gap across rolling of each raceway contact as a roller profile: a crown y^2 / (2 R_y), i.e.
+        :class:`~camcontact.contact.roller_profile.RollerProfile` ``"crowned"`` with the drop l_we^2 / (8 R_y) at the
+        roller's ends (None without the conformities)."""
+        from ..contact.roller_profile import RollerProfile
+
+        if not self.conformal:
+            return None
+        length = self.si.roller_length
+        return {race: RollerProfile(kind="crowned", crown_drop=length**2 / (8.0 * R_y))
+                for race, R_y in self.axial_radii.items()}
 
     @property
     def stiffness(self) -> float:

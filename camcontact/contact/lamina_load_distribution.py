@@ -35,7 +35,7 @@ import attrs
 import numpy as np
 from scipy.optimize import brentq
 
-from ..errors import InputError
+from ..errors import ConvergenceError, InputError
 from .hertz_line import hertz_line_arrays
 
 __all__ = ["ISO_LAMINA_STIFFNESS", "LaminaLoadDistribution", "iso_default_profile", "solve_lamina_load_distribution"]
@@ -64,7 +64,8 @@ def iso_default_profile(x, roller_diameter: float, roller_length: float) -> np.n
 class LaminaLoadDistribution:
     """Roller and lamina loads in equilibrium (SI): ``q`` [N] (Z, n_s) per lamina, ``Q`` [N] (Z,) per roller,
     ``azimuth`` [rad] (Z,), ``x`` [m] (n_s,) lamina centres, ``compression`` [m] (Z, n_s) (negative: open),
-    ``delta_r`` [m], ``misalignment`` [rad], ``moment`` [N m] the laminae exert, ``clearance`` [m]."""
+    ``delta_r`` [m], ``misalignment`` [rad], ``moment`` [N m] the laminae exert, ``clearance`` [m]; the convergence
+    record: ``residual`` |sum Q cos(phi) - F_r| / F_r [-] and ``iterations`` of the root search on delta_r."""
 
     q: np.ndarray = attrs.field(repr=False, eq=False)
     Q: np.ndarray = attrs.field(repr=False, eq=False)
@@ -76,6 +77,8 @@ class LaminaLoadDistribution:
     moment: float
     radial_load: float
     clearance: float
+    residual: float = 0.0
+    iterations: int = 0
 
     @property
     def loaded(self) -> np.ndarray:
@@ -145,6 +148,7 @@ def solve_lamina_load_distribution(radial_load: float, *, roller_count: int, rol
     def loads(delta_r: float) -> np.ndarray:
         return c_s * np.maximum(compression(delta_r), 0.0) ** (10.0 / 9.0)
 
+    iterations = 0
     if Fr == 0.0:
         delta_r = 0.0
     else:
@@ -155,10 +159,15 @@ def solve_lamina_load_distribution(radial_load: float, *, roller_count: int, rol
         high = max(low, 0.0) + 1e-9
         while balance(high) < 0.0:
             high = 2.0 * high + 1e-9
-        delta_r = brentq(balance, low, high, xtol=1e-18, rtol=1e-14)
+        delta_r, info = brentq(balance, low, high, xtol=1e-18, rtol=1e-14, full_output=True)
+        iterations = info.iterations
     q = loads(delta_r)
     Q = q.sum(axis=1)
+    residual = abs(float(np.sum(Q * cos_phi)) - Fr) / Fr if Fr > 0.0 else 0.0
+    if not residual <= 1e-8:
+        raise ConvergenceError(f"lamina load distribution: force imbalance {residual:.3g} of F_r = {Fr:g} N after "
+                               f"{iterations} iterations on delta_r")
     moment = float(np.sum(cos_phi * (q * x[None, :]).sum(axis=1)))
     return LaminaLoadDistribution(q=q, Q=Q, azimuth=azimuth, x=x, compression=compression(delta_r), delta_r=delta_r,
                                   misalignment=float(misalignment), moment=moment, radial_load=Fr,
-                                  clearance=float(clearance))
+                                  clearance=float(clearance), residual=residual, iterations=iterations)

@@ -111,7 +111,8 @@ class RollerProfile:
 @attrs.frozen
 class LaminaResult:
     """Slice loads of a roller contact (SI): centres ``y`` [m], ``load`` q_k [N], ``load_per_length`` [N/m],
-    Hertz ``pressure`` [Pa] and ``approach`` delta - c_k + theta y_k [m] per slice; the roller's ``delta`` [m]."""
+    Hertz ``pressure`` [Pa] and ``approach`` delta - c_k + theta y_k [m] per slice; the roller's ``delta`` [m]; the
+    convergence record: ``residual`` |sum q_k - Q| / Q [-] and ``iterations`` of the root search on delta."""
 
     y: np.ndarray = attrs.field(repr=False, eq=False)
     load: np.ndarray = attrs.field(repr=False, eq=False)
@@ -119,6 +120,8 @@ class LaminaResult:
     pressure: np.ndarray = attrs.field(repr=False, eq=False)
     approach: np.ndarray = attrs.field(repr=False, eq=False)
     delta: float
+    residual: float = 0.0
+    iterations: int = 0
 
     def to_frame(self):
         """One row per lamina: y [mm], load [N], load per length [N/mm], pressure [MPa], approach [um]."""
@@ -158,12 +161,17 @@ def solve_laminae(load: float, length: float, R: float, E_reduced: float, profil
     high = low + (load / stiffness) ** 0.9 + 1e-12
     while carried(high) < 0.0:
         high = low + 2.0 * (high - low)
-    delta = brentq(carried, low, high, xtol=1e-16, rtol=1e-14)
+    delta, info = brentq(carried, low, high, xtol=1e-16, rtol=1e-14, full_output=True)
     approach = delta - gap
     q = stiffness * np.maximum(approach, 0.0) ** (10.0 / 9.0)
+    residual = abs(float(q.sum()) - load) / load
+    if not residual <= 1e-8:
+        raise ConvergenceError(f"laminae: load imbalance {residual:.3g} of Q = {load:g} N after {info.iterations} "
+                               "iterations on the approach")
     per_length = q / width
     pressure = hertz_line_arrays(per_length, R, E_reduced)[1]
-    return LaminaResult(y=y, load=q, load_per_length=per_length, pressure=pressure, approach=approach, delta=delta)
+    return LaminaResult(y=y, load=q, load_per_length=per_length, pressure=pressure, approach=approach, delta=delta,
+                        residual=residual, iterations=info.iterations)
 
 
 def roller_dry_contact(load: float, length: float, R: float, E_reduced: float, profile: RollerProfile, *,

@@ -251,12 +251,15 @@ def rolling_resistance_line(w, R: float, E_reduced: float, eta0: float, alpha: f
 
     with U = eta0 u_m/(E' R), G = alpha E', W = w/(E' R). ``w`` load per unit length [N/m] (scalar or
     array; 0 gives 0), R reduced radius [m], E' [Pa], eta0 [Pa s], alpha [1/Pa] (> 0: the fit is for
-    piezoviscous films), u_m entrainment speed [m/s], l contact length [m].
+    piezoviscous films), u_m entrainment speed [m/s], l contact length [m] (scalar or an array like ``w``).
     """
     where = "rolling resistance (Goksem & Hargreaves)"
     if not alpha or alpha <= 0.0:
         raise InputError(f"{where}: alpha = {alpha!r} 1/Pa; the fit needs a pressure-viscosity coefficient > 0")
-    _check(where, R=R, E_reduced=E_reduced, eta0=eta0, u_m=abs(u_m), length=length)
+    _check(where, R=R, E_reduced=E_reduced, eta0=eta0, u_m=abs(u_m))
+    length = np.asarray(length, dtype=float)
+    if not np.all(np.isfinite(length) & (length >= 0.0)):
+        raise InputError(f"{where}: length = {length!r} m; allowed: finite and >= 0")
     w = np.asarray(w, dtype=float)
     U = eta0 * abs(u_m) / (E_reduced * R)
     G = alpha * E_reduced

@@ -14,7 +14,11 @@ A :class:`~camcontact.components.LoadedBearing` becomes the steps
 ``hertz``
     line-contact Hertz at the inner and outer raceway of every loaded roller (w = Q / l_we;
     rolling-direction radii of :attr:`SphericalRollerBearing.contact_radii`; the outer raceway is
-    concave);
+    concave); with the bearing's conformities (:attr:`SphericalRollerBearing.conformity_inner` / ``_outer``) each
+    contact is instead the finite line it is, sliced into ``LoadedBearing.laminae`` laminae with the gap
+    y^2 / (2 R_y) across rolling (:mod:`camcontact.steps.raceway_laminae`, ISO/TS 16281): its peak pressure, its
+    loaded length ``contact_length_<race>`` (over which the films, the mixed lubrication and the friction then
+    spread the load) and whether it reaches the roller's ends (``edge_loaded_<race>``);
 ``subsurface``
     stresses below the most loaded contact (frictionless);
 ``lubricant``, ``film``, ``lambda_inner``, ``lambda_outer``, ``lubrication``
@@ -78,6 +82,7 @@ from ..steps.friction import roller_fluid_friction, roller_friction
 from ..steps.kinematics import bearing_kinematics, bearing_surface_speeds
 from ..steps.life import bearing_equivalent_load, modified_rating_life, rating_life
 from ..steps.lubricant import lubricant_inputs, lubricant_step
+from ..steps.raceway_laminae import conformal_roller_hertz
 from ..steps.stress import most_loaded_subsurface
 from .bearing_plots import plot_bearing
 
@@ -88,7 +93,7 @@ DEFAULT_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
 PER_ROLLER = frozenset({
     "roller_row", "azimuth", "Q", "loaded", "roller_approach",
     *(f"{q}_{race}" for q in ("b", "p_h", "h_c", "h_min", "Lambda", "friction_coefficient", "friction_valid",
-                              "flash_temperature", "rolling_resistance")
+                              "flash_temperature", "rolling_resistance", "contact_length", "edge_loaded")
       for race in RACES), "contact_regime", *ROLLER_MIXED_OUTPUTS,
 })
 #: what the effects add to the default report
@@ -119,6 +124,8 @@ HINTS = {
     "base_oil": "set LoadedBearing.lubricant (its base oil sets the SKF model's mu_EHL)",
     "asperity_density": "give SphericalRollerBearing.asperity_density and asperity_radius",
 }
+#: what the conformities add to the default report (the finite-line contacts)
+CONFORMAL_OUTPUTS = tuple(f"{q}_{race}" for q in ("contact_length", "edge_loaded") for race in RACES)
 
 
 def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
@@ -133,7 +140,7 @@ def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
         "reliability": scene.reliability, "C": b_si.C, "contact_angle": b_si.contact_angle, "rolling_element": "roller",
         "gamma": bearing.gamma, "pitch_diameter": bearing.d_m, "roller_diameter": b_si.roller_diameter,
         "contact_radii": bearing.contact_radii, "roller_length": b_si.roller_length,
-        "bore": b_si.bore, "outer_diameter": b_si.outer_diameter,
+        "bore": b_si.bore, "outer_diameter": b_si.outer_diameter, "laminae": scene.laminae,
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": "compressibility" in effects,
         **lubricant_inputs(scene.lubricant, scene.si.temperature),
     }
@@ -148,7 +155,7 @@ def bearing_inputs(scene: LoadedBearing, effects: frozenset) -> dict[str, Any]:
     return inputs | given(sigma=b_si.roughness, fatigue_load_limit=b_si.fatigue_load_limit,
                           contamination=scene.contamination, slide_roll_ratio=scene.slide_roll_ratio,
                           bearing_series=bearing.series, lubrication=getattr(scene.lubricant, "form", None),
-                          base_oil=getattr(scene.lubricant, "base_oil", None))
+                          base_oil=getattr(scene.lubricant, "base_oil", None), raceway_profiles=bearing.raceway_profiles())
 
 
 def film_steps(film_model: Any, thermal: bool) -> list[Step]:
@@ -208,7 +215,8 @@ def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: f
     basis = "h_min" if "h_min" in films_of(film_model) else "h_c"
     mixed = "mixed" in effects
     steps = [
-        Step.of(load_distribution), Step.of(bearing_kinematics), Step.of(roller_hertz),
+        Step.of(load_distribution), Step.of(bearing_kinematics),
+        Step.of(conformal_roller_hertz if scene.bearing.conformal else roller_hertz),
         Step.of(most_loaded_subsurface),
         lubricant_step(scene.lubricant, scene.si.temperature), *film_steps(film_model, "thermal" in effects),
         *raceway_lambda_steps(basis),
@@ -222,6 +230,8 @@ def build_bearing(scene: LoadedBearing, *, models: Mapping[str, Any], effects: f
               **friction_inputs(scene, effects)}
     per_index = frozenset(PER_ROLLER & {o for step in steps for o in step.provides})
     added = tuple(q for effect in sorted(effects & EFFECT_OUTPUTS.keys()) for q in EFFECT_OUTPUTS[effect])
-    return SceneGraph(kind="bearing", inputs=inputs, steps=tuple(steps), default_outputs=DEFAULT_OUTPUTS + added,
+    conformal = CONFORMAL_OUTPUTS if scene.bearing.conformal else ()
+    return SceneGraph(kind="bearing", inputs=inputs, steps=tuple(steps),
+                      default_outputs=DEFAULT_OUTPUTS + conformal + added,
                       input_hints=HINTS, plotter=plot_bearing, effects=effects, index="roller", per_index=per_index,
                       effect_outputs=frozenset(added))

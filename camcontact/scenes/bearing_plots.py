@@ -1,9 +1,12 @@
-"""Plots of a bearing result: polar load distribution, contact pressure and film per roller."""
+"""Plots of a bearing result: polar load distribution, contact pressure and film per roller, the pressure along the
+most loaded roller of a bearing with its conformities."""
 
 from __future__ import annotations
 
 import numpy as np
 
+from ..contact.geometry import reduced_modulus
+from ..contact.roller_profile import solve_laminae
 from ..errors import InputError
 from .plot_layout import lambda_bands, panel_axes
 
@@ -54,13 +57,16 @@ def race_panel(ax, row, azimuth, panel: str, element: str) -> None:
     ax.legend(fontsize=7)
 
 
-def plot_bearing(result, *, panels=("load", "pressure", "film", "lambda"), figsize=None, ax=None, fig=None,
-                 columns=2):
+def plot_bearing(result, *, panels=None, figsize=None, ax=None, fig=None, columns=2):
     """Panels: ``"load"`` roller loads over the azimuth (polar, one trace per row), ``"pressure"``
     Hertz p_h at the inner and outer raceway against the azimuth, ``"film"`` h_min per contact, ``"lambda"``
-    Lambda per contact with the regime bands (boundary below 1, mixed to 3); in a grid of ``columns`` per
-    row, or on the caller's axes (``ax=``, one per panel; the load panel's polar) or figure (``fig=``)."""
-    need = {"load": ("azimuth", "Q", "roller_row")} | {
+    Lambda per contact with the regime bands (boundary below 1, mixed to 3), ``"along"`` (a bearing with its
+    conformities: the default adds it) the lamina pressure along the most loaded roller at both raceways with the
+    roller's ends marked; in a grid of ``columns`` per row, or on the caller's axes (``ax=``, one per panel; the
+    load panel's polar) or figure (``fig=``)."""
+    if panels is None:
+        panels = ("load", "pressure", "film", "lambda") + (("along",) if result.scene.bearing.conformal else ())
+    need = {"load": ("azimuth", "Q", "roller_row"), "along": ("Q",)} | {
         panel: ("azimuth", f"{key}_inner", f"{key}_outer", "roller_row") for panel, (key, *_) in CONTACT_PANELS.items()}
     chosen = chosen_panels(result, panels, need, "bearing")
     row = result.rows[0]
@@ -80,6 +86,9 @@ def plot_bearing(result, *, panels=("load", "pressure", "film", "lambda"), figsi
             ax.set_title("roller load Q [kN]", fontsize=10, pad=14)
             ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
             continue
+        if panel == "along":
+            _along_most_loaded(ax, result)
+            continue
         degrees = np.degrees(np.angle(np.exp(1j * azimuth)))
         key, scale, label, title = CONTACT_PANELS[panel]
         top = 0.0
@@ -96,3 +105,32 @@ def plot_bearing(result, *, panels=("load", "pressure", "film", "lambda"), figsi
         ax.set(xlabel="azimuth [deg] (0: load line)", ylabel=label, title=title)
         ax.legend(fontsize=7)
     return fig
+
+
+def _along_most_loaded(ax, result) -> None:
+    """The lamina pressure along the most loaded roller of a spherical roller bearing with its conformities, at both
+    raceways (:func:`camcontact.contact.roller_profile.solve_laminae` with each raceway's gap), roller ends dashed."""
+    scene = result.scene
+    bearing = scene.bearing
+    if not bearing.conformal:
+        raise InputError("bearing plot: the pressure along the roller needs the conformities "
+                         "(SphericalRollerBearing.conformity_inner / conformity_outer); without them the contacts are "
+                         "ideal lines of uniform pressure")
+    if bearing.material is None:
+        raise InputError("bearing plot: the pressure along the roller needs SphericalRollerBearing.material")
+    Q = np.asarray(result.rows[0]["Q"], dtype=float)
+    j = int(np.argmax(Q))
+    length = bearing.si.roller_length
+    E_reduced = reduced_modulus(bearing.material.si.E, bearing.material.nu, bearing.material.si.E, bearing.material.nu)
+    top = 0.0
+    for race, profile in bearing.raceway_profiles().items():
+        laminae = solve_laminae(float(Q[j]), length, bearing.contact_radii[race], E_reduced, profile,
+                                laminae=scene.laminae)
+        ax.step(1e3 * laminae.y, 1e-6 * laminae.pressure, where="mid", label=f"{race} (f = "
+                f"{getattr(bearing, f'conformity_{race}'):.3g})")
+        top = max(top, 1e-6 * float(laminae.pressure.max()))
+    for end in (-0.5e3 * length, 0.5e3 * length):
+        ax.axvline(end, color="0.5", ls="--", lw=0.8)
+    ax.set(xlabel="axial position along the roller [mm] (dashed: its ends)", ylabel="lamina pressure [MPa]",
+           title=f"pressure along the most loaded roller (Q = {1e-3 * Q[j]:.3g} kN)", ylim=(0.0, 1.2 * top or 1.0))
+    ax.legend(fontsize=7, title="raceway", title_fontsize=7)

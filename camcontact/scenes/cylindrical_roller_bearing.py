@@ -10,10 +10,11 @@ A :class:`~camcontact.components.LoadedCylindricalRollerBearing` becomes the ste
 ``kinematics``
     pure rolling (cage speed, roller speed, entrainment speed u_m of both raceway contacts);
 ``hertz``
-    the largest lamina pressure along every roller at both raceways (each lamina a Hertz line contact);
+    the largest lamina pressure along every roller at both raceways (each lamina a Hertz line contact) and the
+    loaded length of every roller ``contact_length_<race>`` (its laminae in contact);
 ``lubricant``, ``film``, ``lambda_inner``, ``lambda_outer``, ``lubrication``
     films of every loaded roller at both raceways by a line film model (slot ``film``, default
-    ``"pan_hamrock"``; the mean load per length Q / L_we), Lambda with the bearing's roughness, the regime;
+    ``"pan_hamrock"``; the mean load per length over the loaded length), Lambda with the bearing's roughness, the regime;
 ``equivalent_load``, ``rating_life``, ``modified_life``, ``reference_life``
     ISO 281 (P = F_r, L10 = (C/P)^(10/3), L_nm with a1, kappa and a_ISO of roller bearings; slot ``life``) and
     ISO/TS 16281's L_10r from the lamina loads (which sees the misalignment and the profile).
@@ -44,7 +45,8 @@ __all__ = ["DEFAULT_OUTPUTS", "build_cylindrical_roller_bearing", "cylindrical_b
 
 SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity", "compressibility"})
 PER_ROLLER = frozenset({"azimuth", "Q", "loaded", "x_q_max", "contact_regime",
-                        *(f"{q}_{race}" for q in ("b", "p_h", "h_c", "h_min", "Lambda") for race in RACES)})
+                        *(f"{q}_{race}" for q in ("b", "p_h", "h_c", "h_min", "Lambda", "contact_length")
+                          for race in RACES)})
 DEFAULT_OUTPUTS = (
     "azimuth", "Q", "loaded", "x_q_max", "p_h_inner", "p_h_outer", "h_min_inner", "h_min_outer", "Lambda_inner",
     "Lambda_outer", "contact_regime", "Q_max", "loaded_rollers", "delta_r", "lamina_moment", "p_h_max", "u_m",

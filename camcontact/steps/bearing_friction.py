@@ -81,10 +81,10 @@ def palmgren_friction_moment(radial_load, axial_load, n_inner, n_outer, kinemati
 @step("rolling_resistance", provides=("rolling_resistance_inner", "rolling_resistance_outer",
                                       "rolling_resistance_moment", "rolling_resistance_power"),
       model="goksem_hargreaves")
-def roller_rolling_resistance(Q, u_m, eta0, alpha, piezoviscosity, E_reduced, contact_radii, roller_length,
-                              pitch_diameter, gamma):
+def roller_rolling_resistance(Q, u_m, eta0, alpha, piezoviscosity, E_reduced, contact_radii, contact_length_inner,
+                              contact_length_outer, pitch_diameter, gamma):
     """Hydrodynamic rolling resistance F_R [N] of the inner and outer raceway contact of every loaded roller
-    (Goksem & Hargreaves 1978, w = Q / l_we; NaN for unloaded rollers), the power sum(F_R u_m) [W] and the
+    (Goksem & Hargreaves 1978, w = Q / l over each contact's length l [m]; NaN for unloaded rollers), the power sum(F_R u_m) [W] and the
     moment on the rings sum(F_R) d_m (1 - gamma^2) / 4 [N m] (power / relative angular speed, since
     u_m = (pi d_m / 2)(1 - gamma^2)|n_i - n_o|)."""
     if not piezoviscosity:
@@ -92,11 +92,13 @@ def roller_rolling_resistance(Q, u_m, eta0, alpha, piezoviscosity, E_reduced, co
                          "'piezoviscosity' effect on")
     loaded = Q > 0.0
     out, total = {}, 0.0
+    lengths = {"inner": contact_length_inner, "outer": contact_length_outer}
     for race in RACES:
         force = np.full(Q.size, np.nan)
         if loaded.any():
-            force[loaded] = rolling_resistance_line(Q[loaded] / roller_length, contact_radii[race], E_reduced, eta0,
-                                                    alpha, u_m, roller_length)
+            length = lengths[race][loaded]
+            force[loaded] = rolling_resistance_line(Q[loaded] / length, contact_radii[race], E_reduced, eta0,
+                                                    alpha, u_m, length)
             total += float(np.sum(force[loaded]))
         out[f"rolling_resistance_{race}"] = force
     out["rolling_resistance_power"] = total * abs(u_m)

@@ -95,12 +95,15 @@ def cycle_hertz(normal_force, width, R, E_reduced, cam_angle):
     return {"w": w, "b": b, "p_h": p_h, "approach": approach}
 
 
-@step("hertz", provides=("b_inner", "b_outer", "p_h_inner", "p_h_outer", "p_h_max"), model="hertz_line")
+@step("hertz", provides=("b_inner", "b_outer", "p_h_inner", "p_h_outer", "p_h_max", "contact_length_inner",
+                         "contact_length_outer"), model="hertz_line")
 def roller_hertz(Q, E_reduced, contact_radii, roller_length):
     """Hertz line contact at the inner and outer raceway of every loaded roller (w = Q / l_we; the
-    rolling-direction radii ``contact_radii[race]`` [m]); NaN for unloaded rollers; the peak pressure."""
-    out = {}
+    rolling-direction radii ``contact_radii[race]`` [m]); NaN for unloaded rollers; the peak pressure; the contacts'
+    length, l_we [m] (an ideal line)."""
     loaded = Q > 0.0
+    length = np.where(loaded, roller_length, np.nan)
+    out = {"contact_length_inner": length, "contact_length_outer": length.copy()}
     for race in RACES:
         b, p = np.full(Q.size, np.nan), np.full(Q.size, np.nan)
         for j in np.flatnonzero(loaded):

@@ -265,17 +265,18 @@ ROLLER_MIXED_OUTPUTS = tuple(f"{q}_{race}" for q in ("asperity_load_fraction", "
 
 
 @step("mixed", provides=ROLLER_MIXED_OUTPUTS, model="greenwood_tripp + johnson_greenwood_poon")
-def roller_mixed(Q, roller_length, contact_radii, E_reduced, u_m, eta0, alpha, piezoviscosity, h_c_inner, h_c_outer,
-                 sigma, asperity_density, asperity_radius):
-    """:func:`mixed_film_cycle` at both raceway contacts of every roller (w = Q / l_we, the rolling-direction
+def roller_mixed(Q, contact_length_inner, contact_length_outer, contact_radii, E_reduced, u_m, eta0, alpha,
+                 piezoviscosity, h_c_inner, h_c_outer, sigma, asperity_density, asperity_radius):
+    """:func:`mixed_film_cycle` at both raceway contacts of every roller (w = Q / l over each contact's length l [m], the rolling-direction
     radius of each race, the composite roughness sqrt 2 sigma of two surfaces of RMS ``sigma`` [m]): the asperities'
     share of the roller load [-], the film at the fluid's share [m], the regime ("unloaded" for a roller without
     load) and ``mixed_valid`` per roller and race."""
     alpha_effective = alpha if piezoviscosity else 0.0
     composite = math.hypot(sigma, sigma)
     out = {}
-    for race, h_c in (("inner", h_c_inner), ("outer", h_c_outer)):
-        values = mixed_film_cycle(Q / roller_length, np.full(Q.size, contact_radii[race]), E_reduced,
+    for race, h_c, length in (("inner", h_c_inner, contact_length_inner), ("outer", h_c_outer, contact_length_outer)):
+        w = np.divide(Q, length, out=np.zeros(Q.size), where=Q > 0.0)
+        values = mixed_film_cycle(w, np.full(Q.size, contact_radii[race]), E_reduced,
                                   np.full(Q.size, u_m), eta0, alpha_effective, h_c, composite, asperity_density,
                                   asperity_radius, piezoviscosity)
         values["lubrication_regime"][Q <= 0.0] = "unloaded"

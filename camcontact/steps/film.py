@@ -251,8 +251,9 @@ def lubrication_regime_step(Lambda):
 @step("film", provides=("h_c_inner", "h_c_outer", "h_min_inner", "h_min_outer", "h_min_bearing"),
       model=model_name, version=model_version)
 def roller_films(film_model, Q, E_reduced, u_m, eta0, alpha, piezoviscosity, lubricant_state, density_law,
-                 contact_radii, roller_length):
-    """Films [m] at the inner and outer raceway of every loaded roller (w = Q / l_we), NaN for unloaded
+                 contact_radii, contact_length_inner, contact_length_outer):
+    """Films [m] at the inner and outer raceway of every loaded roller (w = Q / l over each contact's length l [m]:
+    l_we for an ideal line, the loaded laminae of a profiled or conformal one), NaN for unloaded
     ones, and the thinnest film of the bearing (h_min, or h_c for a model without h_min)."""
     films = films_of(film_model)
     alpha = alpha if piezoviscosity else 0.0
@@ -260,9 +261,10 @@ def roller_films(film_model, Q, E_reduced, u_m, eta0, alpha, piezoviscosity, lub
     if u_m <= 0.0:
         raise InputError("bearing scene: the rings do not turn relative to each other (speed = outer_speed): "
                          "no entrainment, no steady film")
+    lengths = {"inner": contact_length_inner, "outer": contact_length_outer}
     for j in np.flatnonzero(Q > 0.0):
         for race in RACES:
-            state = {"R": contact_radii[race], "w": Q[j] / roller_length, "E_reduced": E_reduced, "u_m": u_m,
+            state = {"R": contact_radii[race], "w": Q[j] / lengths[race][j], "E_reduced": E_reduced, "u_m": u_m,
                      "eta0": eta0, "alpha": alpha, "lubricant_state": lubricant_state, "density_law": density_law}
             produced = film_model(state)
             for q in films:

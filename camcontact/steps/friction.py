@@ -159,10 +159,11 @@ def raceway_kelley_friction(F, length, eta0, u_raceway, u_roller):
 @step("friction", provides=("friction_coefficient_inner", "friction_coefficient_outer", "friction_valid_inner",
                             "friction_valid_outer", "friction_validity", "flash_temperature_inner",
                             "flash_temperature_outer", "friction_power"), model="kelley")
-def roller_friction(Q, u_m, slide_roll_ratio, eta0, E_reduced, effusivity, contact_radii, roller_length):
+def roller_friction(Q, u_m, slide_roll_ratio, eta0, E_reduced, effusivity, contact_radii, contact_length_inner,
+                    contact_length_outer):
     """Benedict–Kelley friction at both raceway contacts of every loaded roller with the slide/roll ratio,
     the flash temperature [K] of each contact and the bearing's sliding friction power sum(mu Q |u1 - u2|)
-    [W]; NaN for unloaded rollers (Delabenetta 2021 Eqs. 48, 49).
+    [W]; NaN for unloaded rollers (Delabenetta 2021 Eqs. 48, 49); each contact over its length l [m].
 
     ``friction_valid_inner`` / ``_outer`` (bool per roller): the contact is loaded and inside the
     correlation's validity (:attr:`camcontact.models.friction.Kelley.validity`, slide-to-roll ratio in
@@ -174,24 +175,24 @@ def roller_friction(Q, u_m, slide_roll_ratio, eta0, E_reduced, effusivity, conta
     inside = bool(kelley.inside_validity(u1, u2))
     messages = kelley.check_validity(kelley.validity_values(u1, u2))
     out = {"friction_validity": "ok" if not messages else "outside the Kelley correlation: " + "; ".join(messages)}
-    mu = np.full(Q.size, np.nan)
-    if loaded.any():
-        mu[loaded] = kelley({"normal_force": Q[loaded], "contact_length": roller_length, "eta0": eta0,
-                             "u1": u1, "u2": u2})["friction_coefficient"]
+    lengths = {"inner": contact_length_inner, "outer": contact_length_outer}
+    mu = {race: np.full(Q.size, np.nan) for race in RACES}
     for race in RACES:
+        if loaded.any():
+            mu[race][loaded] = kelley({"normal_force": Q[loaded], "contact_length": lengths[race][loaded],
+                                       "eta0": eta0, "u1": u1, "u2": u2})["friction_coefficient"]
         out[f"friction_valid_{race}"] = loaded & inside
-    return out | _raceway_heat(Q, {race: mu for race in RACES}, u1, u2, E_reduced, effusivity, contact_radii,
-                               roller_length)
+    return out | _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, lengths)
 
 
-def _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, roller_length) -> dict:
+def _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, lengths) -> dict:
     """Per race the coefficients ``mu[race]`` (NaN for unloaded rollers), Blok's flash temperature [K] of each
     loaded contact (Delabenetta 2021 Eq. 48) and the bearing's sliding power sum(mu Q |u1 - u2|) [W]."""
     out, power = {}, 0.0
     for race in RACES:
         flash = np.full(Q.size, np.nan)
         for j in np.flatnonzero(Q > 0.0):
-            flash[j] = flash_temperature(Q[j] / roller_length, E_reduced, contact_radii[race], mu[race][j], u1, u2,
+            flash[j] = flash_temperature(Q[j] / lengths[race][j], E_reduced, contact_radii[race], mu[race][j], u1, u2,
                                          effusivity, effusivity)
         loaded = Q > 0.0
         power += float(np.sum(mu[race][loaded] * Q[loaded])) * abs(u1 - u2)
@@ -206,7 +207,7 @@ def _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, roller_le
       model=lambda traction_model: f"{traction_model.name} fluid traction")
 def roller_fluid_friction(traction_model, Q, u_m, slide_roll_ratio, p_h_inner, p_h_outer, b_inner, b_outer,
                           h_c_inner, h_c_outer, lubricant_state, E_reduced, effusivity, contact_radii,
-                          roller_length, **inputs):
+                          contact_length_inner, contact_length_outer, **inputs):
     """Fluid traction of the film at both raceway contacts of every loaded roller at the slide/roll ratio
     (a ``traction_models`` model over the Hertz pressure with the central film,
     :mod:`camcontact.models.traction_fluid`: it falls to zero with the slip, as EHL traction does), the flash
@@ -233,7 +234,8 @@ def roller_fluid_friction(traction_model, Q, u_m, slide_roll_ratio, p_h_inner, p
             fluid[loaded] = np.abs(contact.solve(np.full(p_h.size, u1 - u2)).coefficient)
             mu[race][loaded] = mu_b * share * (u1 != u2) + fluid[loaded] * (1.0 - share)
         fluid_valid[race] = np.isfinite(fluid) & (fluid <= FLUID_TRACTION_LIMIT)
-    out = _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii, roller_length)
+    out = _raceway_heat(Q, mu, u1, u2, E_reduced, effusivity, contact_radii,
+                        {"inner": contact_length_inner, "outer": contact_length_outer})
     for race in RACES:
         out[f"friction_valid_{race}"] = loaded & np.isfinite(mu[race]) & fluid_valid[race]
     valid = all(out[f"friction_valid_{race}"][loaded].all() for race in RACES)

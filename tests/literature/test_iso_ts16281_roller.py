@@ -56,6 +56,7 @@ def test_against_an_independent_implementation(profile, with_f, expected):
                                             first_azimuth=math.radians(30.0))
     assert result.Q.max() == pytest.approx(1000.0 / (2 * math.cos(math.radians(30.0))), rel=1e-10)
     assert result.delta_r * 1e6 == pytest.approx(3.474 if profile == "straight" else 6.148, abs=5e-4)
+    assert result.residual <= 1e-10 and 1 <= result.iterations <= 100  # the convergence record
     life = roller_reference_rating_life(result.q, C=31.5e3, roller_diameter=9e-3, pitch_diameter=43.5e-3,
                                         with_edge_factor=with_f)
     assert life["Q_ci"] == pytest.approx(17081.2, rel=1e-5) and life["Q_ce"] == pytest.approx(29795, rel=1e-5)

@@ -88,6 +88,7 @@ def test_laminae_of_a_straight_aligned_roller_are_hertz():
     assert result.delta == pytest.approx(0.5 * (W / line_contact_stiffness(l)) ** 0.9, rel=0.01)  # steel: one of two
     assert result.delta == pytest.approx(roller_dry_contact(W, l, R, E, RollerProfile()).approach, rel=0.06)
     assert solve_laminae(W, l, R, E, RollerProfile(), laminae=7).delta == pytest.approx(result.delta, rel=1e-9)
+    assert result.residual <= 1e-10 and 1 <= result.iterations <= 100  # the convergence record
 
 
 def test_misalignment_loads_one_end_and_crowning_relieves_it():

@@ -133,8 +133,9 @@ def test_palmgren_bad_input_names_the_field(change, field):
 
 def rolling(**changes):
     arguments = dict(Q=np.array([10e3, 4e3, 0.0]), u_m=2.0, eta0=0.06, alpha=1.8e-8, piezoviscosity=True,
-                     E_reduced=2.2e11, contact_radii={"inner": 0.0115, "outer": 0.0155}, roller_length=0.04135,
-                     pitch_diameter=0.255, gamma=0.104)
+                     E_reduced=2.2e11, contact_radii={"inner": 0.0115, "outer": 0.0155},
+                     contact_length_inner=np.array([0.04135, 0.04135, np.nan]),
+                     contact_length_outer=np.array([0.04135, 0.04135, np.nan]), pitch_diameter=0.255, gamma=0.104)
     arguments.update(changes)
     return roller_rolling_resistance(**arguments)
 
@@ -154,6 +155,10 @@ def test_roller_rolling_resistance_against_the_formula():
     assert out["rolling_resistance_moment"] == pytest.approx(total * 0.255 * (1 - 0.104**2) / 4, rel=1e-12)
     # a few newtons per contact: 1e-4..1e-3 of the roller load
     assert 1e-4 < out["rolling_resistance_inner"][0] / 10e3 < 1e-3
+    # a shorter contact (a conformal roller's loaded length) carries the same load at a higher w over less length
+    short = rolling(contact_length_inner=np.array([0.02, 0.04135, np.nan]))["rolling_resistance_inner"][0]
+    U, G, W = eta0 * u / (E * 0.0115), alpha * E, 10e3 / 0.02 / (E * 0.0115)
+    assert short == pytest.approx(4.318 * (G * U) ** 0.658 * W**0.0126 * 0.0115 * 0.02 / alpha, rel=1e-12)
 
 
 @pytest.mark.parametrize("change, field", [({"piezoviscosity": False}, "piezoviscosity"),

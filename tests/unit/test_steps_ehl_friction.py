@@ -52,7 +52,8 @@ def test_roller_mixed_is_the_load_sharing_of_each_roller_contact():
              for race, r in (("inner", 0.008), ("outer", 0.012))}
     sigma = np.hypot(0.2e-6, 0.2e-6)
     density, radius = 0.05 / (6e-6 * sigma), 6e-6
-    out = roller_mixed(Q, 41.35e-3, {"inner": 0.008, "outer": 0.012}, E, 2.0, STATE.eta0, STATE.alpha, True,
+    lengths = np.where(Q > 0.0, 41.35e-3, np.nan)
+    out = roller_mixed(Q, lengths, lengths, {"inner": 0.008, "outer": 0.012}, E, 2.0, STATE.eta0, STATE.alpha, True,
                        films["inner"], films["outer"], 0.2e-6, density, radius)
     assert_provides(roller_mixed, out)
     for race, r in (("inner", 0.008), ("outer", 0.012)):

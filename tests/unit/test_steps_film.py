@@ -244,8 +244,10 @@ def test_lubrication_regime_boundaries():
 RADII = {"inner": 0.0121, "outer": 0.0149}
 
 
-def _roller_films(model, Q, u_m=3.0, piezoviscosity=True):
-    return roller_films(model, Q, E_STEEL, u_m, 0.06, 2e-8, piezoviscosity, None, "incompressible", RADII, 0.04)
+def _roller_films(model, Q, u_m=3.0, piezoviscosity=True, lengths=None):
+    lengths = lengths or {race: np.where(Q > 0.0, 0.04, np.nan) for race in RADII}
+    return roller_films(model, Q, E_STEEL, u_m, 0.06, 2e-8, piezoviscosity, None, "incompressible", RADII,
+                        lengths["inner"], lengths["outer"])
 
 
 def test_roller_films_pan_hamrock_per_race():
@@ -260,6 +262,12 @@ def test_roller_films_pan_hamrock_per_race():
             assert out[f"h_c_{race}"][j] == pytest.approx(h_c, rel=1e-12)
             assert out[f"h_min_{race}"][j] == pytest.approx(h_min, rel=1e-12)
         assert math.isnan(out[f"h_min_{race}"][1])
+    # a shorter contact (a conformal roller's loaded length) spreads the same load over less length: w = Q / l
+    short = _roller_films(registry.get("film_models", "pan_hamrock"), Q,
+                          lengths={"inner": np.array([0.02, np.nan, 0.04]), "outer": np.array([0.04, np.nan, 0.04])})
+    assert short["h_c_inner"][0] == pytest.approx(pan_hamrock(Q[0] / 0.02, RADII["inner"], E_STEEL, 3.0, 0.06, 2e-8)[0],
+                                                  rel=1e-12)
+    assert short["h_c_outer"][0] == pytest.approx(out["h_c_outer"][0], rel=1e-12)
     assert out["h_min_bearing"] == pytest.approx(pan_hamrock(5e5, 0.0121, E_STEEL, 3.0, 0.06, 2e-8)[1], rel=1e-12)
 
 

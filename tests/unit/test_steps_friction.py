@@ -155,7 +155,8 @@ def test_roller_friction_per_roller_and_race():
     Q = np.array([20e3, 0.0, 5e3])
     radii = {"inner": 0.0121, "outer": 0.0149}
     u_m, s, eta, E, length = 3.0, 0.1, 0.06, 2.3e11, 0.04
-    out = roller_friction(Q, u_m, s, eta, E, EFFUSIVITY, radii, length)
+    lengths = np.where(Q > 0.0, length, np.nan)
+    out = roller_friction(Q, u_m, s, eta, E, EFFUSIVITY, radii, lengths, lengths)
     assert_provides(roller_friction, out)
     u1, u2 = u_m * 1.05, u_m * 0.95
     power = 0.0
@@ -174,9 +175,13 @@ def test_roller_friction_per_roller_and_race():
         assert out[f"friction_valid_{race}"].dtype == bool
         np.testing.assert_array_equal(out[f"friction_valid_{race}"], [True, False, True])
     assert out["friction_validity"] == "ok"
-    idle = roller_friction(np.zeros(3), u_m, s, eta, E, EFFUSIVITY, radii, length)
+    idle = roller_friction(np.zeros(3), u_m, s, eta, E, EFFUSIVITY, radii, np.full(3, np.nan), np.full(3, np.nan))
     assert idle["friction_power"] == 0.0 and np.all(np.isnan(idle["friction_coefficient_inner"]))
     assert not idle["friction_valid_outer"].any()
+    # a contact over half the length (a conformal roller's inner contact) has Kelley's mu of its own length
+    short = roller_friction(Q, u_m, s, eta, E, EFFUSIVITY, radii, 0.5 * lengths, lengths)
+    assert short["friction_coefficient_inner"][0] == pytest.approx(kelley(Q[0], 0.5 * length, eta, u1, u2), rel=1e-12)
+    assert short["friction_coefficient_outer"][0] == pytest.approx(out["friction_coefficient_outer"][0], rel=1e-12)
 
 
 def test_roller_friction_flags_contacts_below_the_correlations_slip_range():
@@ -184,11 +189,12 @@ def test_roller_friction_flags_contacts_below_the_correlations_slip_range():
     while 2 % (the tutorial's assumed slip) lies inside [0.01, 2]."""
     Q = np.array([20e3, 0.0, 5e3])
     radii = {"inner": 0.0121, "outer": 0.0149}
-    low = roller_friction(Q, 2.0, 0.002, 0.06, 2.3e11, EFFUSIVITY, radii, 0.04)
+    lengths = np.where(Q > 0.0, 0.04, np.nan)
+    low = roller_friction(Q, 2.0, 0.002, 0.06, 2.3e11, EFFUSIVITY, radii, lengths, lengths)
     assert not low["friction_valid_inner"].any() and not low["friction_valid_outer"].any()
     assert "slide_roll_ratio = 0.002 below the validated range" in low["friction_validity"]
     assert np.all(np.isfinite(low["friction_coefficient_outer"][[0, 2]]))
-    usual = roller_friction(Q, 2.0, 0.02, 0.06, 2.3e11, EFFUSIVITY, radii, 0.04)
+    usual = roller_friction(Q, 2.0, 0.02, 0.06, 2.3e11, EFFUSIVITY, radii, lengths, lengths)
     np.testing.assert_array_equal(usual["friction_valid_inner"], [True, False, True])
     assert usual["friction_validity"] == "ok"
     assert np.all(low["friction_coefficient_outer"][[0, 2]] > usual["friction_coefficient_outer"][[0, 2]])
@@ -206,8 +212,9 @@ def test_roller_fluid_friction_per_contact_against_the_traction_model():
     Q = np.array([0.0, 20e3, 10e3])
     p_h, b, h = np.array([np.nan, 1.2e9, 0.9e9]), np.array([np.nan, 2e-4, 1.5e-4]), np.array([np.nan, 4e-7, 4.5e-7])
     radii = {"inner": 0.03, "outer": 0.1}
+    lengths = np.where(Q > 0.0, 0.04, np.nan)
     out = roller_fluid_friction(model, Q, 4.0, 0.02, p_h, p_h * 0.8, b, b * 1.2, h, h, state, 2.3e11, 1.2e4, radii,
-                                0.04)
+                                lengths, lengths)
     assert_provides(roller_fluid_friction, out)
     mu = np.abs(model.contact(p_h[1:], b[1:], h[1:], 4.0, state).coefficient(0.02 * 4.0))
     np.testing.assert_allclose(out["friction_coefficient_inner"][1:], mu, rtol=1e-12)
