@@ -41,7 +41,9 @@ deep-groove bearing, delta_j being the norm of an affine function; for an angula
 while the loaded balls stay on their flanks, A_1j > 0, which holds unless the loads nearly lift them).
 Newton's method with backtracking minimises it with each ball's K_n frozen; K_n is then updated at the new contact angles until they settle. Without a given
 moment the tilt is held at zero (a bearing on a shaft supported elsewhere, Harris's combined-load
-case) and the moment the balls then exert is reported; with one, theta is solved.
+case) and the moment the balls then exert is reported; with one, theta is solved. Two angular-contact bearings
+mounted as a pair (back to back, face to face or in tandem, with an axial preload) share one set of ring
+displacements about the pair's centre: :func:`solve_ball_pair_load_distribution`.
 
 References: Harris, T.A. & Kotzalas, M.N. (2007) Rolling Bearing Analysis, 5th ed., Vol. 1, ch. 2
 (Eqs. 2.1-2.9: osculation, total curvature B, free contact angle), ch. 6 (Hertz contact of a ball
@@ -61,10 +63,13 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from .hertz_elliptical import hertz_elliptical
 
-__all__ = ["BallLoadDistribution", "ball_race_radii", "ball_stiffness", "solve_ball_load_distribution"]
+__all__ = ["PAIR_ARRANGEMENTS", "BallLoadDistribution", "ball_race_radii", "ball_stiffness",
+           "solve_ball_load_distribution", "solve_ball_pair_load_distribution"]
 
 EXPONENT = 1.5  #: Q = K delta^(3/2), point contact
 RACES = ("inner", "outer")
+#: how the two bearings of a pair face each other (:func:`solve_ball_pair_load_distribution`)
+PAIR_ARRANGEMENTS = ("back_to_back", "face_to_face", "tandem")
 
 
 def ball_race_radii(ball_diameter: float, pitch_diameter: float, osculation: float, contact_angle: float,
@@ -113,6 +118,16 @@ class BallLoadDistribution:
     residual: float
     iterations: int
     residuals: tuple = attrs.field(repr=False, eq=False)
+    row: np.ndarray | None = attrs.field(default=None, repr=False, eq=False)
+    arrangement: str = "single"
+
+    @property
+    def row_axial_loads(self) -> np.ndarray:
+        """Axial load [N] each row (bearing) carries onto its own flanks, sum Q sin(alpha) (one value for a single
+        bearing)."""
+        rows = np.zeros(self.Q.size, dtype=int) if self.row is None else self.row
+        axial = np.where(self.Q > 0.0, self.Q * np.sin(np.nan_to_num(self.contact_angle)), 0.0)
+        return np.bincount(rows, weights=axial)
 
     @property
     def Q_max(self) -> float:
@@ -141,7 +156,9 @@ class BallLoadDistribution:
 
 @attrs.frozen
 class _Geometry:
-    """The centre offsets per ball and their derivatives with respect to x = (delta_a, delta_r, theta)."""
+    """The centre offsets per ball and their derivatives with respect to x = (delta_a, delta_r, theta): per ball the
+    flank direction ``sign`` of its bearing (+1, or -1 for the mirrored bearing of a pair), the axial position ``z``
+    [m] of its row from the centre of tilt and the axial ``offset`` [m] a preload gives its centres."""
 
     a0: float
     r0: float
@@ -149,9 +166,13 @@ class _Geometry:
     locus: float
     cos_psi: np.ndarray
     one_flank: bool
+    sign: np.ndarray | float = 1.0
+    z: np.ndarray | float = 0.0
+    offset: np.ndarray | float = 0.0
 
     def centres(self, x):
-        return self.a0 + x[0] + self.locus * x[2] * self.cos_psi, self.r0 + x[1] * self.cos_psi
+        return (self.a0 + self.offset + self.sign * (x[0] + self.locus * x[2] * self.cos_psi),
+                self.r0 + (x[1] - self.z * x[2]) * self.cos_psi)
 
     def state(self, x, K):
         """(delta, alpha, Q, s, A1, A2) per ball."""
@@ -168,9 +189,10 @@ class _Geometry:
         """d(A1, A2)/dx per ball: shape (Z, 2, 3)."""
         Z = self.cos_psi.size
         G = np.zeros((Z, 2, 3))
-        G[:, 0, 0] = 1.0
-        G[:, 0, 2] = self.locus * self.cos_psi
+        G[:, 0, 0] = self.sign
+        G[:, 0, 2] = self.sign * self.locus * self.cos_psi
         G[:, 1, 1] = self.cos_psi
+        G[:, 1, 2] = -self.z * self.cos_psi
         return G
 
 
@@ -228,28 +250,8 @@ def solve_ball_load_distribution(
     """
     Fr, Fa = float(radial_load), float(axial_load)
     D, d_m = float(ball_diameter), float(pitch_diameter)
-    for name, value in (("radial_load", Fr), ("axial_load", Fa), ("clearance", clearance),
-                        ("moment", 0.0 if moment is None else moment)):
-        if not math.isfinite(value):
-            raise InputError(f"ball load distribution: {name} = {value!r}; must be finite")
-    if Fr < 0.0:
-        raise InputError(f"ball load distribution: radial_load = {Fr:g} N; allowed >= 0 (its direction is azimuth 0)")
-    if not (isinstance(ball_count, (int, np.integer)) and ball_count >= 3):
-        raise InputError(f"ball load distribution: ball_count = {ball_count!r}; allowed: an integer >= 3")
-    for name, value in (("ball_diameter", D), ("pitch_diameter", d_m), ("E_reduced", E_reduced)):
-        if not (value > 0.0 and math.isfinite(value)):
-            raise InputError(f"ball load distribution: {name} = {value!r}; allowed: finite and > 0")
-    if not d_m > D:
-        raise InputError(f"ball load distribution: pitch_diameter = {d_m!r} m must exceed ball_diameter = {D!r} m")
-    if moment_lever not in ("groove_centres", "pitch"):
-        raise InputError(f"ball load distribution: moment_lever = {moment_lever!r}; allowed: 'groove_centres', 'pitch'")
-    if not (tolerance > 0.0 and isinstance(max_iterations, int) and max_iterations >= 1):
-        raise InputError(f"ball load distribution: tolerance = {tolerance!r}, max_iterations = {max_iterations!r}; "
-                         "allowed: tolerance > 0, max_iterations an integer >= 1")
-    for name, f in (("inner_osculation", inner_osculation), ("outer_osculation", outer_osculation)):
-        if not 0.5 < f < 1.0:
-            raise InputError(f"ball load distribution: {name} = {f!r}; allowed 0.5 < f < 1 (groove radius over ball "
-                             "diameter: at 0.5 the groove fits the ball and the contact has no Hertz solution)")
+    _check_inputs(Fr, Fa, 0.0 if moment is None else moment, clearance, ball_count, D, d_m, E_reduced, moment_lever,
+                  tolerance, max_iterations, inner_osculation, outer_osculation)
     A = (inner_osculation + outer_osculation - 1.0) * D
     if free_contact_angle is None:
         if not clearance < 2.0 * A:
@@ -272,15 +274,145 @@ def solve_ball_load_distribution(
     geometry = _Geometry(a0=a0, r0=r0, A=A, locus=locus, cos_psi=np.cos(psi), one_flank=free_contact_angle is not None)
     free_dofs = [0, 1, 2] if moment is not None else [0, 1]
     F = np.array([Fa, Fr, 0.0 if moment is None else float(moment)])
-    scale = max(abs(Fr), abs(Fa), abs(F[2]) / locus, 1.0)
 
+    stiffness = _stiffness_law(D, d_m, inner_osculation, outer_osculation, E_reduced)
+    K0 = float(stiffness([alpha0])[0])
+    x = np.zeros(3)
+    if not (Fr == 0.0 and Fa == 0.0 and F[2] == 0.0):
+        x = _start(geometry, K0, F, Z, alpha0, clearance if free_contact_angle is None else 0.0)
+    return _equilibrium(geometry, F, free_dofs, stiffness, K0, alpha0, x, tolerance, max_iterations, psi)
+
+
+def solve_ball_pair_load_distribution(
+    radial_load: float,
+    axial_load: float,
+    moment: float | None = None,
+    *,
+    arrangement: str,
+    row_spacing: float,
+    preload: float = 0.0,
+    ball_count: int,
+    ball_diameter: float,
+    pitch_diameter: float,
+    inner_osculation: float,
+    outer_osculation: float,
+    E_reduced: float,
+    free_contact_angle: float,
+    moment_lever: str = "groove_centres",
+    tolerance: float = 1e-10,
+    max_iterations: int = 200,
+) -> BallLoadDistribution:
+    """Ball loads and contact angles of a pair of identical angular-contact ball bearings on one rigid shaft and in
+    one rigid housing, under F_r, F_a and a tilting moment M in the plane of F_r (module docstring for one bearing);
+    ``moment`` None holds the tilt at zero (a shaft supported elsewhere too) and reports the balls' moment.
+
+    The rows sit at z = -e/2 and +e/2 about the pair's centre, e = ``row_spacing`` (row 0, which carries a positive
+    F_a, at -e/2 back to back or in tandem, at +e/2 face to face); the inner rings
+    move together by (delta_a, delta_r) and tilt by theta about that centre, so the ball centres of row k move
+    axially by sign_k (delta_a + R_i theta cos(psi)) in their bearing's own frame and radially by
+    (delta_r - z_k theta) cos(psi). ``arrangement``:
+
+    * ``"back_to_back"`` (DB, "O"): the contact lines of the two rows meet on the axis outside the pair, which
+      spreads the rows' reactions and makes the pair stiff against tilting;
+    * ``"face_to_face"`` (DF, "X"): they meet inside it, which makes the pair compliant against tilting;
+    * ``"tandem"`` (DT): both rows face the same way and share an axial load of one direction (F_a > 0).
+
+    ``preload`` delta_p [m] (DB / DF only): the axial interference of the clamped pair, which presses each bearing's
+    balls onto their flanks by delta_p / 2 (its axial offset) before any load; a preloaded pair keeps both rows
+    loaded until the axial load relieves one, at F_a = 2^(3/2) F_0 for a constant contact angle (F_0 the preload
+    force; Harris & Kotzalas 2007, ch. 8). Positive F_a presses row 0 onto its flanks. Returns the 2Z balls (row 0
+    first) with ``row`` and ``arrangement``; ``moment`` the applied M (the tilt solved) or the balls' reaction.
+
+    Raises InputError for a bad input (naming it) or loads the pair cannot carry (a tandem pair without an axial
+    load of its direction), ConvergenceError when no equilibrium is found.
+    """
+    Fr, Fa, M = float(radial_load), float(axial_load), 0.0 if moment is None else float(moment)
+    D, d_m = float(ball_diameter), float(pitch_diameter)
+    _check_inputs(Fr, Fa, M, 0.0, ball_count, D, d_m, E_reduced, moment_lever, tolerance, max_iterations,
+                  inner_osculation, outer_osculation)
+    if arrangement not in PAIR_ARRANGEMENTS:
+        raise InputError(f"ball pair load distribution: arrangement = {arrangement!r}; allowed: "
+                         f"{', '.join(PAIR_ARRANGEMENTS)}")
+    if not (row_spacing > 0.0 and math.isfinite(row_spacing)):
+        raise InputError(f"ball pair load distribution: row_spacing = {row_spacing!r} m; allowed: finite and > 0 (the "
+                         "axial distance between the rows' ball centres)")
+    if not (preload >= 0.0 and math.isfinite(preload)) or (arrangement == "tandem" and preload != 0.0):
+        raise InputError(f"ball pair load distribution: preload = {preload!r} m; allowed: finite and >= 0, and 0 for a "
+                         "tandem pair (it is preloaded against a third bearing, which is not modelled)")
+    alpha0 = float(free_contact_angle)
+    if not 0.0 < alpha0 < 0.5 * math.pi:
+        raise InputError(f"ball pair load distribution: free_contact_angle = {math.degrees(alpha0):.4g} deg; allowed "
+                         "0 < alpha_0 < 90 deg")
+    A = (inner_osculation + outer_osculation - 1.0) * D
+    Z = int(ball_count)
+    psi = np.tile(2.0 * math.pi * np.arange(Z) / Z, 2)
+    row = np.repeat([0, 1], Z)
+    # row 0 carries positive F_a (its flank sign +1); its contact lines meet the axis outside the pair (O) when it sits
+    # at -e/2, inside (X) at +e/2
+    first = 0.5 if arrangement == "face_to_face" else -0.5
+    z = np.where(row == 0, first, -first) * row_spacing
+    sign = np.ones(2 * Z) if arrangement == "tandem" else np.where(row == 0, 1.0, -1.0)
+    locus = 0.5 * d_m + (inner_osculation - 0.5) * D * math.cos(alpha0) if moment_lever == "groove_centres" else 0.5 * d_m
+    geometry = _Geometry(a0=A * math.sin(alpha0), r0=A * math.cos(alpha0), A=A, locus=locus, cos_psi=np.cos(psi),
+                         one_flank=True, sign=sign, z=z, offset=0.5 * preload)
+    F = np.array([Fa, Fr, M])
+
+    stiffness = _stiffness_law(D, d_m, inner_osculation, outer_osculation, E_reduced)
+    K0 = float(stiffness([alpha0])[0])
+    x = np.zeros(3)
+    if preload == 0.0 and (Fa != 0.0 or Fr != 0.0 or M != 0.0):
+        # take up the play that the unpreloaded pair has not: a Stribeck-sized elastic deformation of the balls
+        per_ball = max(5.0 * Fr / (Z * math.cos(alpha0)), abs(Fa) / (Z * math.sin(alpha0)),
+                       4.0 * abs(M) / (row_spacing * Z), 1e-6)
+        elastic = (per_ball / K0) ** (1.0 / EXPONENT)
+        x[0] = math.copysign(elastic / math.sin(alpha0), Fa) if Fa != 0.0 else 0.0
+        x[1] = elastic / math.cos(alpha0) if Fr > 0.0 else 0.0
+    free_dofs = [0, 1] if moment is None else [0, 1, 2]
+    return _equilibrium(geometry, F, free_dofs, stiffness, K0, alpha0, x, tolerance, max_iterations, psi,
+                        row=row, arrangement=arrangement)
+
+
+
+def _stiffness_law(D: float, d_m: float, inner_osculation: float, outer_osculation: float, E_reduced: float):
+    """K_n of each ball at its contact angle [rad]: alpha (array) -> K_n (array) [N/m^1.5]."""
     def stiffness(alpha):
         return np.array([ball_stiffness(D, d_m, inner_osculation, outer_osculation, a, E_reduced) for a in alpha])
 
-    K = np.full(Z, stiffness([alpha0])[0])
-    x = np.zeros(3)
-    if not (Fr == 0.0 and Fa == 0.0 and F[2] == 0.0):
-        x = _start(geometry, K[0], F, Z, alpha0, clearance if free_contact_angle is None else 0.0)
+    return stiffness
+
+def _check_inputs(Fr, Fa, moment, clearance, ball_count, D, d_m, E_reduced, moment_lever, tolerance, max_iterations,
+                  inner_osculation, outer_osculation) -> None:
+    """InputError naming the argument, its value and what is allowed, for the inputs both solvers share."""
+    for name, value in (("radial_load", Fr), ("axial_load", Fa), ("clearance", clearance), ("moment", moment)):
+        if not math.isfinite(value):
+            raise InputError(f"ball load distribution: {name} = {value!r}; must be finite")
+    if Fr < 0.0:
+        raise InputError(f"ball load distribution: radial_load = {Fr:g} N; allowed >= 0 (its direction is azimuth 0)")
+    if not (isinstance(ball_count, (int, np.integer)) and ball_count >= 3):
+        raise InputError(f"ball load distribution: ball_count = {ball_count!r}; allowed: an integer >= 3")
+    for name, value in (("ball_diameter", D), ("pitch_diameter", d_m), ("E_reduced", E_reduced)):
+        if not (value > 0.0 and math.isfinite(value)):
+            raise InputError(f"ball load distribution: {name} = {value!r}; allowed: finite and > 0")
+    if not d_m > D:
+        raise InputError(f"ball load distribution: pitch_diameter = {d_m!r} m must exceed ball_diameter = {D!r} m")
+    if moment_lever not in ("groove_centres", "pitch"):
+        raise InputError(f"ball load distribution: moment_lever = {moment_lever!r}; allowed: 'groove_centres', 'pitch'")
+    if not (tolerance > 0.0 and isinstance(max_iterations, int) and max_iterations >= 1):
+        raise InputError(f"ball load distribution: tolerance = {tolerance!r}, max_iterations = {max_iterations!r}; "
+                         "allowed: tolerance > 0, max_iterations an integer >= 1")
+    for name, f in (("inner_osculation", inner_osculation), ("outer_osculation", outer_osculation)):
+        if not 0.5 < f < 1.0:
+            raise InputError(f"ball load distribution: {name} = {f!r}; allowed 0.5 < f < 1 (groove radius over ball "
+                             "diameter: at 0.5 the groove fits the ball and the contact has no Hertz solution)")
+
+
+def _equilibrium(geometry: _Geometry, F: np.ndarray, free_dofs: list, stiffness, K0: float, alpha0: float,
+                 x: np.ndarray, tolerance: float, max_iterations: int, psi: np.ndarray, **extra) -> BallLoadDistribution:
+    """Newton on the potential with the balls' K_n frozen, then K_n updated at the new contact angles until they
+    settle; the result with its convergence record (ConvergenceError above 100 x the tolerance)."""
+    Fa, Fr = float(F[0]), float(F[1])
+    scale = max(abs(Fr), abs(Fa), abs(F[2]) / geometry.locus, 1.0)
+    K = np.full(psi.size, K0)
     residuals: list[float] = []
     iterations = 0
     previous = None
@@ -292,17 +424,18 @@ def solve_ball_load_distribution(
         if previous is not None and np.max(np.abs(alpha - previous)) < 1e-12 or np.allclose(new_K, K, rtol=1e-13):
             break
         previous, K = alpha, new_K
-    delta, alpha, Q, s, A1, A2 = geometry.state(x, K)
-    reaction = float(np.sum(Q * np.sin(alpha) * locus * geometry.cos_psi))
+    delta, alpha, Q, *_ = geometry.state(x, K)
+    reaction = float(_gradient(geometry, x, K, np.zeros(3))[2])
     gradient = _gradient(geometry, x, K, F)
-    residual = float(np.max(np.abs(gradient[free_dofs] * np.array([1.0, 1.0, 1.0 / locus])[free_dofs]))) / scale
+    weight = np.array([1.0, 1.0, 1.0 / geometry.locus])
+    residual = float(np.max(np.abs(gradient[free_dofs] * weight[free_dofs]))) / scale
     if residual > max(100.0 * tolerance, 1e-8):
         raise ConvergenceError(f"ball load distribution: force imbalance {residual:.3g} after {iterations} Newton steps "
-                               f"(F_r = {Fr:g} N, F_a = {Fa:g} N)")
+                               f"(F_r = {Fr:g} N, F_a = {Fa:g} N, M = {F[2]:g} N m)")
     return BallLoadDistribution(
         Q=Q, contact_angle=np.where(Q > 0.0, alpha, np.nan), approach=delta, stiffness=K, azimuth=psi,
         delta_a=float(x[0]), delta_r=float(x[1]), tilt=float(x[2]), moment=reaction, radial_load=Fr, axial_load=Fa,
-        free_contact_angle=alpha0, residual=residual, iterations=iterations, residuals=tuple(residuals))
+        free_contact_angle=alpha0, residual=residual, iterations=iterations, residuals=tuple(residuals), **extra)
 
 
 def _start(geometry: _Geometry, K: float, F: np.ndarray, Z: int, alpha0: float, clearance: float) -> np.ndarray:
