@@ -262,5 +262,6 @@ class BallBearing(Component):
                                       pitch_diameter=self.d_m, contact_angle=self.si.contact_angle,
                                       inner_osculation=self.inner_osculation, outer_osculation=self.outer_osculation,
                                       inner_rotates=inner_rotates)["L10r"] * 1e6 for k in (0, 1)]
-        L10r = sum(life ** (-10.0 / 9.0) for life in rows) ** -0.9
+        inverse = sum(life ** (-10.0 / 9.0) for life in rows)  # an unloaded bearing's life is infinite: 0
+        L10r = inverse**-0.9 if inverse > 0.0 else math.inf
         return {"L10r": L10r, "L10r_rows": tuple(rows), "distribution": result}

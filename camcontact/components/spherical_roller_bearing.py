@@ -18,7 +18,9 @@ the contact is as long as the load makes it, and reaches the roller's ends (l_we
 finite line it really is. ISO/TS 16281:2008 slices such a contact into laminae with this gap as the profile
 (:meth:`SphericalRollerBearing.raceway_profiles`, :func:`camcontact.steps.raceway_laminae.conformal_roller_hertz`).
 Without the conformities (catalogues do not print them) the contacts are ideal lines of length l_we, which
-underestimates the pressure of a lightly loaded roller.
+underestimates the pressure of a lightly loaded roller. The load distribution over the rollers keeps Palmgren's
+stiffness of a roller on its full length either way (with zero clearance the distribution does not depend on the
+stiffness; with clearance a conformal roller, softer under light load, spreads the load zone a little wider).
 
 The ratings C (dynamic) and C0 (static) and, if known, the fatigue load limit P_u come from the
 catalogue; :meth:`SphericalRollerBearing.load_distribution` distributes radial and axial loads

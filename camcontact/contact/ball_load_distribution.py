@@ -367,6 +367,8 @@ def solve_ball_pair_load_distribution(
         elastic = (per_ball / K0) ** (1.0 / EXPONENT)
         x[0] = math.copysign(elastic / math.sin(alpha0), Fa) if Fa != 0.0 else 0.0
         x[1] = elastic / math.cos(alpha0) if Fr > 0.0 else 0.0
+        if moment is not None and M != 0.0:  # a tilt that presses the balls of one side (either arrangement)
+            x[2] = math.copysign(elastic / (locus * math.sin(alpha0) + 0.5 * row_spacing * math.cos(alpha0)), M)
     free_dofs = [0, 1] if moment is None else [0, 1, 2]
     return _equilibrium(geometry, F, free_dofs, stiffness, K0, alpha0, x, tolerance, max_iterations, psi,
                         row=row, arrangement=arrangement)
@@ -424,7 +426,11 @@ def _equilibrium(geometry: _Geometry, F: np.ndarray, free_dofs: list, stiffness,
         if previous is not None and np.max(np.abs(alpha - previous)) < 1e-12 or np.allclose(new_K, K, rtol=1e-13):
             break
         previous, K = alpha, new_K
-    delta, alpha, Q, *_ = geometry.state(x, K)
+    delta, alpha, Q, _, _, A2 = geometry.state(x, K)
+    if np.any((Q > 0.0) & (A2 <= 0.0)):
+        raise InputError(f"ball load distribution: under F_r = {Fr:g} N, F_a = {Fa:g} N, M = {F[2]:g} N m loaded balls "
+                         "reach contact angles of 90 deg and beyond: the loads drive them over their grooves' shoulders "
+                         "(the bearing cannot carry them; the shoulders are not modelled)")
     reaction = float(_gradient(geometry, x, K, np.zeros(3))[2])
     gradient = _gradient(geometry, x, K, F)
     weight = np.array([1.0, 1.0, 1.0 / geometry.locus])

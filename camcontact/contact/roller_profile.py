@@ -123,6 +123,25 @@ class LaminaResult:
     residual: float = 0.0
     iterations: int = 0
 
+    @property
+    def loaded_length(self) -> float:
+        """Length of the loaded contact along the roller [m]: from where the approach delta - c + theta y crosses zero
+        (linear between the lamina centres, so the slices' width does not quantise it) or the roller's end, to the
+        same at the other side; 0 without load."""
+        loaded = np.flatnonzero(self.load > 0.0)
+        if loaded.size == 0:
+            return 0.0
+        y, a = self.y, self.approach
+        half_width = 0.5 * (y[1] - y[0])
+
+        def edge(inside: int, outside: int, end: float) -> float:
+            if outside < 0 or outside >= y.size:
+                return end
+            return y[outside] + (y[inside] - y[outside]) * a[outside] / (a[outside] - a[inside])
+
+        first, last = int(loaded[0]), int(loaded[-1])
+        return edge(last, last + 1, y[-1] + half_width) - edge(first, first - 1, y[0] - half_width)
+
     def to_frame(self):
         """One row per lamina: y [mm], load [N], load per length [N/mm], pressure [MPa], approach [um]."""
         import pandas as pd

@@ -248,6 +248,18 @@ def test_tandem_pair_without_axial_load_is_refused():
         solve_ball_pair_load_distribution(1000.0, -500.0, arrangement="tandem", **PAIR)
 
 
+def test_pair_without_preload_carries_a_pure_moment_and_refuses_balls_over_their_shoulders():
+    """A pair without preload under a moment alone: the balls of one side of each row take it (either sign, either
+    arrangement); a tandem pair under 1 kN axial and 50 N m would need contact angles beyond 90 deg, which no groove
+    allows: refused with the reason, not returned as an equilibrium."""
+    for arrangement in ("back_to_back", "face_to_face"):
+        for M in (50.0, -50.0):
+            result = solve_ball_pair_load_distribution(0.0, 0.0, M, arrangement=arrangement, **PAIR)
+            assert result.moment == pytest.approx(M, rel=1e-8) and math.copysign(1.0, result.tilt) == math.copysign(1.0, M)
+    with pytest.raises(InputError, match="90 deg"):
+        solve_ball_pair_load_distribution(0.0, 1000.0, 50.0, arrangement="tandem", **PAIR)
+
+
 def test_pair_of_catalogue_bearings_and_its_reference_life():
     """Two 7208 BE-like bearings (C 36.4 kN) back to back under pure radial load: L_10r of the pair (each bearing's
     from its ball loads, combined with the Weibull slope 10/9) lies 14-19 % below ISO 281's L10 of the pair,
@@ -266,6 +278,7 @@ def test_pair_of_catalogue_bearings_and_its_reference_life():
         assert life["L10r"] == pytest.approx(life["L10r_rows"][0] * 2 ** -0.9, rel=1e-9)
     spread = bearing.pair_load_distribution("0 N", "0 N", "100 N*m", preload="5 um", row_spacing="36 mm")
     assert spread.tilt < bearing.pair_load_distribution("0 N", "0 N", "100 N*m", preload="5 um").tilt
+    assert bearing.pair_reference_life("0 N")["L10r"] == math.inf  # no load, no fatigue
     deep = attrs.evolve(bearing, kind="deep_groove", contact_angle=None)
     with pytest.raises(InputError, match="pairs are of angular_contact"):
         deep.pair_load_distribution("1 kN")

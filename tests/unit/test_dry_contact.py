@@ -124,3 +124,16 @@ def test_johns_gohar_is_finite_at_the_ends_and_bad_profiles_are_named():
         solve_laminae(-1.0, l, R, E, RollerProfile())
     with pytest.raises(InputError, match="must be 1-D grids"):
         solve_dry_contact(np.zeros(3), np.zeros(3), np.zeros((3, 3)), 1.0, E)
+
+
+def test_loaded_length_is_interpolated_where_the_approach_crosses_zero():
+    """A circular crown y^2 / (2 R_y) loads |y| < sqrt(2 R_y delta): the loaded length follows from the approach's zero
+    crossing between the lamina centres (error of the linear interpolation only), not from counting whole laminae; a
+    straight roller is loaded over its whole length; no load, no length."""
+    l, R, R_y = 0.02, 0.006, 3.0
+    profile = RollerProfile(kind="crowned", crown_drop=l**2 / (8 * R_y))
+    for laminae in (30, 60):
+        result = solve_laminae(3000.0, l, R, E, profile, laminae=laminae)
+        assert result.loaded_length == pytest.approx(2 * math.sqrt(2 * R_y * result.delta), rel=2e-3)
+        assert result.loaded_length < l
+    assert solve_laminae(3000.0, l, R, E, RollerProfile()).loaded_length == pytest.approx(l, rel=1e-12)

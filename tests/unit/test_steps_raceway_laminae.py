@@ -52,11 +52,12 @@ def one_roller(Q, b):
 
 
 def test_a_lightly_loaded_roller_is_the_elliptical_hertz_contact():
-    """5 kN on a roller of the 24040-like bearing (f 0.98, R_y 6.4 m, R_x 12.1 mm at the inner race): the Hertz ellipse
-    (2a_y 29 mm) is shorter than the roller (41.35 mm), so the contact does not reach its ends. The numerical
+    """5 kN on a roller of the 24040-like bearing (f 0.98, R_y 6.99 m, R_x 12.1 mm at the inner race): the Hertz
+    ellipse (2a_y 21.5 mm) is shorter than the roller (41.35 mm), so the contact does not reach its ends. The numerical
     half-space contact equals the exact elliptical Hertz to 0.3 % in peak pressure; the laminae (no interaction
-    between slices) lie 3-6 % below it and the ideal line of length l_we 35 % below: the conformity, not the roller
-    length, sets the pressure of a lightly loaded roller."""
+    between slices) lie 3.4 % below it over a 10 % longer contact (their 10/9 law spreads the load further), the same
+    with 30 or 60 laminae; the ideal line of length l_we lies 41 % below: the conformity, not the roller length, sets
+    the pressure of a lightly loaded roller."""
     b = conformal()
     out = one_roller(5e3, b)
     R_x, R_y = b.contact_radii["inner"], b.axial_radii["inner"]
@@ -65,9 +66,11 @@ def test_a_lightly_loaded_roller_is_the_elliptical_hertz_contact():
     assert numerical.p_max == pytest.approx(exact.p_max, rel=0.003)
     assert 0.94 < out["p_h_inner"][0] / exact.p_max < 0.97
     assert 2 * exact.a_y < b.si.roller_length and not out["edge_loaded_inner"][0]
-    assert out["contact_length_inner"][0] == pytest.approx(2 * exact.a_y, rel=0.1)  # the slices' 10/9 law: 9 % longer
+    assert 1.05 < out["contact_length_inner"][0] / (2 * exact.a_y) < 1.15
+    coarse = conformal_roller_hertz(np.array([5e3]), E, b.contact_radii, b.si.roller_length, b.raceway_profiles(), 30)
+    assert coarse["contact_length_inner"][0] == pytest.approx(out["contact_length_inner"][0], rel=0.01)
     line = hertz_line(5e3 / b.si.roller_length, R_x, E).p_h
-    assert line < 0.7 * exact.p_max
+    assert line < 0.6 * exact.p_max
     assert math.isnan(out["p_h_inner"][1]) and math.isnan(out["contact_length_outer"][1])  # unloaded: no contact
     assert not out["edge_loaded_outer"][1] and out["raceway_laminae"]["inner"][1] is None
     assert set(out) == set(CONFORMAL_HERTZ) and out["p_h_max"] == max(out["p_h_inner"][0], out["p_h_outer"][0])
