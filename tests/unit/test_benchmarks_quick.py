@@ -3,6 +3,8 @@
 import importlib.util
 from pathlib import Path
 
+import numpy as np
+
 
 BENCHMARKS = Path(__file__).resolve().parents[2] / "benchmarks"
 
@@ -109,3 +111,15 @@ def test_accuracy_vs_time_traction_quick(tmp_path):
     mixed = by.loc["EHL Eyring + asperities (mixed), Hertz pressure"]
     assert 0.0 < mixed["asperity share in [%]"] < 1.0 and frame["asperity share in [%]"].notna().sum() == 2
     assert abs(mixed["efficiency [%]"] - hertz) < 0.1
+
+
+def test_stability_map_quick(tmp_path):
+    """benchmarks/stability_map.py --quick: a 4 x 3 corner of the Moes map at level 6, each case with its status,
+    attempts and work units (timings reported, never asserted)."""
+    frame = _load("stability_map").main(["--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "stability_map.csv").exists() and len(frame) == 12
+    assert set(frame["status"]) <= {"converged", "warning", "error"}
+    assert (frame["attempts"] >= 1).all() and (frame["attempts"] <= 3).all()
+    converged = frame[frame["status"] == "converged"]
+    # finite films (at level 6 the discrete film of M = 1000 closes, H_min just below 0: too coarse a grid for it)
+    assert len(converged) >= 10 and (converged["work units"] > 0).all() and np.isfinite(converged["H_min"]).all()
