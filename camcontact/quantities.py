@@ -258,6 +258,11 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("tilting_moment", "N*m", "N*m", "moment of the ball loads about the bearing centre"),
         _q("contact_angle_max", "rad", "deg", "largest contact angle of the loaded balls"),
         _q("contact_angle_min", "rad", "deg", "smallest contact angle of the loaded balls"),
+        _q("ball_row", "", "", "bearing of a pair the ball belongs to (0: the one a positive axial load presses, 1)"),
+        _q("axial_load_row0", "N", "kN", "axial load bearing 0 of a pair carries on its flanks (sum Q sin alpha)"),
+        _q("axial_load_row1", "N", "kN", "axial load bearing 1 of a pair carries on its flanks (sum Q sin alpha)"),
+        _q("preload_relieved", None, None, "True where one bearing of a pair carries no ball load (the axial load "
+                                           "has relieved its preload)"),
         _q("a_rolling_inner", "m", "um", "Hertz semi-axis along rolling at the inner raceway"),
         _q("a_transverse_inner", "m", "um", "Hertz semi-axis across rolling at the inner raceway"),
         _q("a_rolling_outer", "m", "um", "Hertz semi-axis along rolling at the outer raceway"),

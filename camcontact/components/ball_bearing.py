@@ -229,39 +229,48 @@ class BallBearing(Component):
         side by side) under F_r, F_a [force] and a tilting moment [force x length] in the plane of F_r (None holds
         the tilt at zero) by :func:`camcontact.contact.ball_load_distribution.solve_ball_pair_load_distribution`;
         positive F_a loads the first bearing (row 0)."""
-        from ..contact.ball_load_distribution import solve_ball_pair_load_distribution
         from ..units import si_value, to_quantity
+
+        Fr = si_value(to_quantity(radial_load, "[force]", where="pair_load_distribution(radial_load)"))
+        Fa = si_value(to_quantity(axial_load, "[force]", where="pair_load_distribution(axial_load)"))
+        M = None if moment is None else si_value(to_quantity(moment, "[force] * [length]",
+                                                             where="pair_load_distribution(moment)"))
+        spacing = None if row_spacing is None else si_value(
+            to_quantity(row_spacing, "[length]", where="pair_load_distribution(row_spacing)"))
+        return self.pair_load_distribution_si(
+            Fr, Fa, M, arrangement=arrangement, row_spacing=spacing,
+            preload=si_value(to_quantity(preload, "[length]", where="pair_load_distribution(preload)")))
+
+    def pair_load_distribution_si(self, radial_load: float, axial_load: float = 0.0, moment: float | None = None, *,
+                                  arrangement: str = "back_to_back", preload: float = 0.0,
+                                  row_spacing: float | None = None):
+        """:meth:`pair_load_distribution` for SI loads [N, N m] and lengths [m] (the scene's entry); needs the
+        material."""
+        from ..contact.ball_load_distribution import solve_ball_pair_load_distribution
 
         where = f"BallBearing {self.designation or self.name!r}"
         if self.kind != "angular_contact":
             raise InputError(f"{where}: kind = {self.kind!r}; pairs are of angular_contact bearings (a deep-groove "
                              "bearing carries both axial directions itself)")
-        Fr = si_value(to_quantity(radial_load, "[force]", where="pair_load_distribution(radial_load)"))
-        Fa = si_value(to_quantity(axial_load, "[force]", where="pair_load_distribution(axial_load)"))
-        M = None if moment is None else si_value(to_quantity(moment, "[force] * [length]",
-                                                             where="pair_load_distribution(moment)"))
-        spacing = self.si.width if row_spacing is None else si_value(
-            to_quantity(row_spacing, "[length]", where="pair_load_distribution(row_spacing)"))
         return solve_ball_pair_load_distribution(
-            Fr, Fa, M, arrangement=arrangement, row_spacing=spacing,
-            preload=si_value(to_quantity(preload, "[length]", where="pair_load_distribution(preload)")),
+            radial_load, axial_load, moment, arrangement=arrangement,
+            row_spacing=self.si.width if row_spacing is None else row_spacing, preload=preload,
             free_contact_angle=self.si.contact_angle, **self._ball_geometry("pair load distribution"))
 
     def pair_reference_life(self, radial_load, axial_load="0 N", moment=None, *, arrangement="back_to_back",
                             preload="0 um", row_spacing=None, inner_rotates=True) -> dict:
         """ISO/TS 16281 L_10r [revolutions] of the pair of :meth:`pair_load_distribution`: each bearing's from its
-        ball loads (:func:`camcontact.models.iso281_ball.reference_rating_life` with this bearing's C,
-        :attr:`dynamic_load_rating`), combined as
-        the two rings of a bearing are, L_10r = (sum_k L_k^(-10/9))^(-9/10) (the Weibull slope 10/9 of ball
-        bearings). Returns ``L10r``, ``L10r_rows`` (per bearing) and the ``distribution``."""
-        from ..models.iso281_ball import reference_rating_life
+        ball loads with this bearing's C (:attr:`dynamic_load_rating`), combined as the two rings of a bearing are,
+        L_10r = (sum_k L_k^(-10/9))^(-9/10) (the Weibull slope 10/9 of ball bearings;
+        :func:`camcontact.models.iso281_ball.pair_reference_rating_life`). Returns ``L10r``, ``L10r_rows`` (per
+        bearing) and the ``distribution``."""
+        from ..models.iso281_ball import pair_reference_rating_life
 
         result = self.pair_load_distribution(radial_load, axial_load, moment, arrangement=arrangement,
                                              preload=preload, row_spacing=row_spacing)
-        rows = [reference_rating_life(result.Q[result.row == k], C=self.dynamic_load_rating, ball_diameter=self.si.ball_diameter,
-                                      pitch_diameter=self.d_m, contact_angle=self.si.contact_angle,
-                                      inner_osculation=self.inner_osculation, outer_osculation=self.outer_osculation,
-                                      inner_rotates=inner_rotates)["L10r"] * 1e6 for k in (0, 1)]
-        inverse = sum(life ** (-10.0 / 9.0) for life in rows)  # an unloaded bearing's life is infinite: 0
-        L10r = inverse**-0.9 if inverse > 0.0 else math.inf
-        return {"L10r": L10r, "L10r_rows": tuple(rows), "distribution": result}
+        life = pair_reference_rating_life(result.Q, result.row, C=self.dynamic_load_rating,
+                                          ball_diameter=self.si.ball_diameter, pitch_diameter=self.d_m,
+                                          contact_angle=self.si.contact_angle, inner_osculation=self.inner_osculation,
+                                          outer_osculation=self.outer_osculation, inner_rotates=inner_rotates)
+        return {"L10r": life["L10r"] * 1e6, "L10r_rows": tuple(1e6 * L for L in life["L10r_rows"]),
+                "distribution": result}

@@ -21,6 +21,16 @@ equivalent loads, the reference rating life from the ball loads.
 * L10 = (C/P)^3 10^6 revolutions (§7.1) and a_ISO of radial ball bearings (§9.3.3, Eqs. 31-33) are
   :class:`camcontact.models.life_iso281.ISO281`'s with ``rolling_element="ball"``
   (:func:`camcontact.models.life_iso281.a_iso_ball`).
+* Pairs of identical single-row angular contact ball bearings (:func:`pair_equivalent_load`,
+  :func:`pair_static_equivalent_load`, :func:`pair_load_ratings`): mounted back to back or face to face they are
+  rated as one double-row bearing, i = 2 in Eq. 1, C = 2^0.7 C of one bearing, and C_0 = 2 C_0 (ISO 76's
+  C_0r = f_0 i Z D_w^2 cos(alpha), i = 2); in tandem as bearings sharing one load, n^0.7 C with n = 2 bearings
+  (ISO 281's rule for bearing combinations; the same 2^0.7). P of a DB/DF pair with Table 3's double-row
+  columns (:data:`PAIR_XY`): X = 1, Y = Y_1 for F_a/F_r <= e (e of the single row), X_2, Y_2 above; P_0 with
+  X_0 = 1 and Y_0 twice the single row's (ISO 76 Table 3's double-row column). A tandem pair takes the single-row
+  factors with the pair's F_r, F_a (below 20° the relative axial load of each bearing, f_0 (F_a/2) / C_0r) and the
+  single-row X_0 = 0.5, Y_0 with C_0 = 2 C_0. The fatigue load limit of a pair is 2 P_u (ISO 281 Annex B: P_u of a
+  ball bearing is proportional to C_0 at a given pitch diameter).
 * ISO/TS 16281:2008 basic reference rating life from the ball loads Q_j of the load distribution
   (:func:`reference_rating_life`): the ball loads the rings could carry for 10^6 revolutions,
   Q_ci = C / (0.407 Z (i cos alpha)^0.7) [1 + (1.044 r)^(10/3)]^0.3 and
@@ -29,6 +39,15 @@ equivalent loads, the reference rating life from the ball loads.
   of the ring that turns against the load (Q_e = (sum Q_j^3 / Z)^(1/3)) and of the one that does not
   ((sum Q_j^(10/3) / Z)^(3/10)), and L_10r = [(Q_ci/Q_ei)^(-10/3) + (Q_ce/Q_ee)^(-10/3)]^(-9/10) [10^6 rev];
   gamma and alpha nominal.
+
+The double-row factors of a DB/DF pair were checked against published tables (the ISO text itself was not at
+hand): 30° and 40° (e 0.80 / 1.14; Y_1 0.78 / 0.55; X_2 0.63 / 0.57; Y_2 1.24 / 0.93) and the static Y_0 of a pair,
+twice the single row's (0.92 at 15°, 0.66 at 30°, 0.52 at 40°), in Koyo's catalogue, "Calculation of equivalent
+radial / axial load" (koyousa.com/koyocatalog/technical/03/3_1_32.htm); 25° (e 0.68, Y_1 0.92, X_2 0.67, Y_2 1.41),
+40° again, and 35° (e 0.95, Y_1 0.66, X_2 0.60, Y_2 1.07, the row the same table gives four-point contact ball
+bearings) and Y_0 0.76 at 25° in LYC's "Equivalent dynamic / static load - angular contact ball bearings"
+(lycbearing.com). The double-row rows at 20° and 45° and the load-dependent ones below 20° were not found in a
+source that could be checked, so they are left out: a DB/DF pair below 25° or above 40° is refused (InputError).
 
 Sources: ISO 281:2007 (Tables 1-3, Eqs. 1-2, 28-29, 31-33), ISO 76:2006 (C_0r, X_0, Y_0), ISO/TS 16281:2008
 (Eqs. 19-29 for ball bearings), as transcribed
@@ -48,8 +67,10 @@ import numpy as np
 
 from ..errors import InputError
 
-__all__ = ["ANGULAR_CONTACT_XY", "ANGULAR_LOAD_DEPENDENT", "AXIAL_LOAD_GRID", "DEEP_GROOVE_XY", "FC_TABLE", "STATIC_Y0",
-           "ball_equivalent_load", "dynamic_load_rating", "reference_rating_life", "static_equivalent_load"]
+__all__ = ["ANGULAR_CONTACT_XY", "ANGULAR_LOAD_DEPENDENT", "AXIAL_LOAD_GRID", "DEEP_GROOVE_XY", "FC_TABLE", "PAIR_XY",
+           "STATIC_Y0", "ball_equivalent_load", "dynamic_load_rating", "pair_equivalent_load", "pair_load_ratings",
+           "pair_reference_rating_life", "pair_static_equivalent_load", "reference_rating_life",
+           "static_equivalent_load"]
 
 #: ISO 281:2007 Table 1: b_m of radial ball bearings (except filling-slot, insert and self-aligning ones)
 B_M = 1.3
@@ -83,6 +104,15 @@ ANGULAR_CONTACT_XY = {20.0: (0.57, 0.43, 1.00), 25.0: (0.68, 0.41, 0.87), 30.0: 
 #: ISO 76:2006 Table 3, single-row angular contact ball bearings: contact angle [deg] -> Y_0 (X_0 = 0.5)
 STATIC_Y0 = {5.0: 0.52, 10.0: 0.50, 15.0: 0.46, 20.0: 0.42, 25.0: 0.38, 30.0: 0.33, 35.0: 0.29, 40.0: 0.26, 45.0: 0.22}
 LIFE_EXPONENT_BALL = 3.0
+#: ISO 281:2007 Table 3, double-row angular contact ball bearings (a pair back to back or face to face): contact angle
+#: [deg] -> (e, Y_1 for F_a/F_r <= e with X = 1, X_2 and Y_2 for F_a/F_r > e); only the rows confirmed from published
+#: tables (module docstring)
+PAIR_XY = {25.0: (0.68, 0.92, 0.67, 1.41), 30.0: (0.80, 0.78, 0.63, 1.24), 35.0: (0.95, 0.66, 0.60, 1.07),
+           40.0: (1.14, 0.55, 0.57, 0.93)}
+#: how a pair's C and C_0 grow over one bearing's: i^0.7 (i = 2 rows, or n = 2 bearings in tandem) and i
+PAIR_RATING_FACTORS = (2.0**0.7, 2.0)
+#: the arrangements whose bearings face each other (rated as one double-row bearing); the third is "tandem"
+_OPPOSED = ("back_to_back", "face_to_face")
 
 
 #: the groove osculations Table 2's f_c holds for (ISO 281 §6.1.1: r_i <= 0.52 D_w, r_e <= 0.53 D_w)
@@ -189,3 +219,79 @@ def reference_rating_life(Q, *, C: float, ball_diameter: float, pitch_diameter: 
         return {"L10r": math.inf, "Q_ci": Q_ci, "Q_ce": Q_ce, "Q_ei": 0.0, "Q_ee": 0.0}
     L10r = ((Q_ci / Q_ei) ** (-10.0 / 3.0) + (Q_ce / Q_ee) ** (-10.0 / 3.0)) ** -0.9
     return {"L10r": L10r, "Q_ci": Q_ci, "Q_ce": Q_ce, "Q_ei": Q_ei, "Q_ee": Q_ee}
+
+
+def pair_load_ratings(C: float, C0: float, fatigue_load_limit: float | None = None) -> dict[str, float | None]:
+    """C, C_0 and P_u [N] of a pair of identical bearings from one bearing's (module docstring): 2^0.7 C, 2 C_0 and
+    2 P_u (None stays None), for back to back, face to face and tandem alike."""
+    dynamic, static = PAIR_RATING_FACTORS
+    return {"C": dynamic * C, "C0": static * C0,
+            "fatigue_load_limit": None if fatigue_load_limit is None else static * fatigue_load_limit}
+
+
+def _check_arrangement(arrangement: str, axial_load: float, what: str) -> None:
+    if arrangement not in (*_OPPOSED, "tandem"):
+        raise InputError(f"{what}: arrangement = {arrangement!r}; allowed: 'back_to_back', 'face_to_face', 'tandem'")
+    if arrangement == "tandem" and axial_load < 0.0:
+        raise InputError(f"{what}: axial_load = {axial_load:g} N on a tandem pair points away from its contact angle "
+                         "(allowed >= 0; both bearings face the same way)")
+
+
+def pair_equivalent_load(radial_load: float, axial_load: float, *, arrangement: str, contact_angle: float, C0: float,
+                         f0: float | None, ball_count: int, ball_diameter: float) -> dict[str, float]:
+    """P [N] and e, X, Y of a pair of identical single-row angular contact ball bearings under the pair's F_r, F_a [N]
+    (module docstring): back to back or face to face (F_a of either sign) with the double-row factors of
+    :data:`PAIR_XY`, linear between its rows (25..40°; InputError outside, naming the angle); in tandem with
+    :func:`ball_equivalent_load`'s single-row factors, each bearing's relative axial load f_0 (F_a/2) / C_0r
+    (``C0`` [N] and ``ball_count`` Z of one bearing)."""
+    Fr, Fa = float(radial_load), float(axial_load)
+    _check_arrangement(arrangement, Fa, "ISO 281 P of a pair")
+    if arrangement == "tandem":
+        return ball_equivalent_load(Fr, Fa, kind="angular_contact", contact_angle=contact_angle, C0=2.0 * C0, f0=f0,
+                                    ball_count=2 * ball_count, ball_diameter=ball_diameter)
+    if Fr < 0.0 or not (math.isfinite(Fr) and math.isfinite(Fa)):
+        raise InputError(f"ISO 281 P of a pair: radial_load = {radial_load!r} N, axial_load = {axial_load!r} N; "
+                         "allowed: finite, radial >= 0")
+    degrees = math.degrees(contact_angle)
+    angles = sorted(PAIR_XY)
+    if not angles[0] - 1e-9 <= degrees <= angles[-1] + 1e-9:
+        raise InputError(f"ISO 281 P of a {arrangement} pair: contact angle {degrees:.4g} deg; the double-row factors "
+                         f"of Table 3 are implemented from {angles[0]:g} to {angles[-1]:g} deg only (the 20 and 45 deg "
+                         "rows and the load-dependent rows below 20 deg could not be confirmed from a source)")
+    e, Y1, X2, Y2 = (float(np.interp(degrees, angles, [PAIR_XY[a][k] for a in angles])) for k in range(4))
+    Fa = abs(Fa)
+    if Fr > 0.0 and Fa / Fr <= e:
+        return {"P": Fr + Y1 * Fa, "e": e, "X": 1.0, "Y": Y1}
+    return {"P": X2 * Fr + Y2 * Fa, "e": e, "X": X2, "Y": Y2}
+
+
+def pair_static_equivalent_load(radial_load: float, axial_load: float, *, arrangement: str,
+                                contact_angle: float) -> float:
+    """P_0 [N] of a pair of identical single-row angular contact ball bearings under the pair's F_r, F_a [N]: back to
+    back or face to face F_r + 2 Y_0 |F_a| (X_0 = 1, Y_0 of :data:`STATIC_Y0`); in tandem the single row's
+    :func:`static_equivalent_load` (X_0 = 0.5, at least F_r). Its static rating is 2 C_0 (:func:`pair_load_ratings`)."""
+    Fr, Fa = float(radial_load), float(axial_load)
+    _check_arrangement(arrangement, Fa, "ISO 76 P_0 of a pair")
+    if arrangement == "tandem":
+        return static_equivalent_load(Fr, Fa, kind="angular_contact", contact_angle=contact_angle)
+    Y0 = 2.0 * float(np.interp(math.degrees(contact_angle), list(STATIC_Y0), list(STATIC_Y0.values())))
+    return Fr + Y0 * abs(Fa)
+
+
+def pair_reference_rating_life(Q, row, *, C: float, ball_diameter: float, pitch_diameter: float, contact_angle: float,
+                               inner_osculation: float, outer_osculation: float,
+                               inner_rotates: bool = True) -> dict[str, float | tuple]:
+    """ISO/TS 16281 L_10r [10^6 revolutions] of a pair of identical bearings from the ball loads ``Q`` [N] of both and
+    their ``row`` (0 or 1 per ball): each bearing's :func:`reference_rating_life` with its C [N], combined as the two
+    rings of a bearing are, L_10r = (sum_k L_k^(-10/9))^(-9/10) (the Weibull slope 10/9 of ball bearings; an unloaded
+    bearing's life is infinite and drops out). Returns ``L10r`` and ``L10r_rows`` (per bearing)."""
+    Q, row = np.asarray(Q, dtype=float), np.asarray(row)
+    if row.shape != Q.shape or not set(np.unique(row).tolist()) <= {0, 1}:
+        raise InputError(f"ISO/TS 16281 L_10r of a pair: row must give 0 or 1 for each of the {Q.size} balls "
+                         f"(got {row!r})")
+    rows = tuple(reference_rating_life(Q[row == k], C=C, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
+                                       contact_angle=contact_angle, inner_osculation=inner_osculation,
+                                       outer_osculation=outer_osculation, inner_rotates=inner_rotates)["L10r"]
+                 for k in (0, 1))
+    inverse = sum(life ** (-10.0 / 9.0) for life in rows)
+    return {"L10r": inverse**-0.9 if inverse > 0.0 else math.inf, "L10r_rows": rows}

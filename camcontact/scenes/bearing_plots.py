@@ -30,26 +30,32 @@ def chosen_panels(result, panels, need: dict, what: str) -> list[str]:
     return chosen
 
 
-def polar_loads(ax, azimuth, loads, title: str) -> None:
-    """Rolling-element loads [N] over their azimuth [rad] on a polar Axes, closed, in kN, the radial load down."""
+def polar_loads(ax, azimuth, loads, title: str, label: str | None = None) -> None:
+    """Rolling-element loads [N] over their azimuth [rad] on a polar Axes, closed, in kN, the radial load down
+    (``label``: the trace's, with a legend)."""
     azimuth = np.asarray(azimuth, dtype=float)
     kilo = np.asarray(loads, dtype=float) * 1e-3
-    ax.plot(np.append(azimuth, azimuth[0] + 2 * np.pi), np.append(kilo, kilo[0]), marker="o", ms=3)
+    ax.plot(np.append(azimuth, azimuth[0] + 2 * np.pi), np.append(kilo, kilo[0]), marker="o", ms=3, label=label)
     ax.set_theta_zero_location("S")  # the radial load points down
     ax.set_title(title, fontsize=10, pad=14)
+    if label is not None:
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
 
 
-def race_panel(ax, row, azimuth, panel: str, element: str) -> None:
-    """One of :data:`CONTACT_PANELS` per rolling element (one row of elements) at the inner and outer raceway against
-    the azimuth [deg] (``azimuth`` [rad]), titled per ``element``; Lambda with its regime bands."""
-    degrees = np.degrees(np.angle(np.exp(1j * np.asarray(azimuth, dtype=float))))
-    order = np.argsort(degrees)
+def race_panel(ax, row, azimuth, panel: str, element: str, groups=None) -> None:
+    """One of :data:`CONTACT_PANELS` per rolling element (one row of elements; or one trace per group of ``groups``,
+    (mask, label suffix) pairs, e.g. the bearings of a pair) at the inner and outer raceway against the azimuth [deg]
+    (``azimuth`` [rad]), titled per ``element``; Lambda with its regime bands."""
+    every = np.ones(np.size(azimuth), dtype=bool)
     key, scale, label, title = CONTACT_PANELS[panel]
     top = 0.0
-    for race, style in (("inner", "o"), ("outer", "s")):
-        values = np.asarray(row[f"{key}_{race}"], dtype=float)[order] * scale
-        top = max(top, float(np.nanmax(values, initial=0.0)))
-        ax.plot(degrees[order], values, marker=style, ms=3, label=race)
+    for mask, suffix in groups or [(every, "")]:
+        degrees = np.degrees(np.angle(np.exp(1j * np.asarray(azimuth, dtype=float)[mask])))
+        order = np.argsort(degrees)
+        for race, style in (("inner", "o"), ("outer", "s")):
+            values = np.asarray(row[f"{key}_{race}"], dtype=float)[mask][order] * scale
+            top = max(top, float(np.nanmax(values, initial=0.0)))
+            ax.plot(degrees[order], values, marker=style, ms=3, label=race + suffix)
     if panel == "lambda":
         lambda_bands(ax)
         ax.set_ylim(0.0, max(3.0, 1.1 * top))

@@ -7,6 +7,10 @@ Hertz (Harris & Kotzalas ch. 6, :func:`camcontact.contact.hertz_elliptical.hertz
 contact angle; films by a point film model (Hamrock & Dowson 1977 by default); the stresses on the axis of
 the most loaded contact (:func:`camcontact.contact.subsurface_point.point_subsurface`); ISO 281:2007 for
 radial ball bearings and ISO 76:2006 for the static equivalent load (:mod:`camcontact.models.iso281_ball`).
+A pair of angular-contact bearings (back to back, face to face, tandem) has steps of its own for the load
+distribution of both bearings (:func:`ball_pair_loads`) and for ISO 281 / ISO 76 / ISO/TS 16281 of the pair
+(:func:`ball_pair_equivalent_load`, :func:`ball_pair_static_safety`, :func:`ball_pair_reference_life`); the contact,
+film and kinematics steps take its 2Z balls as they take Z.
 Forces [N], lengths [m], pressures [Pa], angles [rad], ring speeds n [rev/s].
 """
 
@@ -21,16 +25,22 @@ from ..contact.ball_load_distribution import ball_race_radii
 from ..contact.hertz_elliptical import hertz_elliptical
 from ..contact.subsurface_point import point_subsurface
 from ..errors import InputError, ValidityWarning
-from ..models.iso281_ball import ball_equivalent_load, reference_rating_life, static_equivalent_load
+from ..models.iso281_ball import (ball_equivalent_load, pair_equivalent_load, pair_reference_rating_life,
+                                  pair_static_equivalent_load, reference_rating_life, static_equivalent_load)
 from ..step_graph import step
 from .contact import RACES
 from .film import films_of, model_name, model_version
 
-__all__ = ["BALL_LOADS", "ball_bearing_equivalent_load", "ball_films", "ball_hertz", "ball_kinematics", "ball_loads",
-           "ball_reference_life", "ball_static_safety", "ball_subsurface"]
+__all__ = ["BALL_LOADS", "PAIR_LOADS", "ball_bearing_equivalent_load", "ball_films", "ball_hertz", "ball_kinematics",
+           "ball_loads", "ball_pair_equivalent_load", "ball_pair_loads", "ball_pair_reference_life",
+           "ball_pair_static_safety", "ball_reference_life", "ball_static_safety", "ball_subsurface"]
 
 BALL_LOADS = ("ball_azimuth", "Q", "contact_angle", "loaded", "ball_approach", "Q_max", "loaded_balls", "load_zone",
               "delta_r", "delta_a", "ring_tilt", "tilting_moment", "contact_angle_max", "contact_angle_min", "force_residual")
+
+
+#: what the load distribution of a pair adds: each ball's bearing, each bearing's axial load, whether one is unloaded
+PAIR_LOADS = (*BALL_LOADS, "ball_row", "axial_load_row0", "axial_load_row1", "preload_relieved")
 
 
 @step("load_distribution", provides=BALL_LOADS, model="harris_ball_rigid_rings")
@@ -40,7 +50,27 @@ def ball_loads(bearing, radial_load, axial_load, moment):
     NaN contact values), with the inner ring's displacements [m] and tilt [rad], the moment of the balls
     [N m], the number of loaded balls, the angle of the last loaded ball from the load line [rad] and the
     extreme contact angles of the loaded balls [rad]."""
-    result = bearing.load_distribution_si(radial_load, axial_load, moment)
+    return _load_outputs(bearing.load_distribution_si(radial_load, axial_load, moment))
+
+
+@step("load_distribution", provides=PAIR_LOADS, model="harris_ball_rigid_rings (pair)")
+def ball_pair_loads(bearing, radial_load, axial_load, moment, arrangement, preload, row_spacing):
+    """:func:`ball_loads` of two identical angular-contact bearings mounted as a pair (``arrangement``
+    "back_to_back", "face_to_face" or "tandem", axial ``preload`` [m], ``row_spacing`` [m] between their ball
+    centres; :meth:`camcontact.components.BallBearing.pair_load_distribution_si`) under the pair's F_r, F_a [N] and
+    moment [N m]: the 2Z balls, bearing 0 first, with ``ball_row`` (0 or 1) per ball, the axial load each bearing
+    carries on its own flanks [N] and ``preload_relieved`` (True when one bearing carries no ball load: the axial
+    load has relieved its preload)."""
+    result = bearing.pair_load_distribution_si(radial_load, axial_load, moment, arrangement=arrangement,
+                                               preload=preload, row_spacing=row_spacing)
+    axial = result.row_axial_loads
+    relieved = any(not np.any(result.loaded[result.row == k]) for k in (0, 1))
+    return {**_load_outputs(result), "ball_row": result.row.astype(float), "axial_load_row0": float(axial[0]),
+            "axial_load_row1": float(axial[1]), "preload_relieved": bool(relieved)}
+
+
+def _load_outputs(result) -> dict:
+    """The outputs :data:`BALL_LOADS` of a load distribution (one bearing's or a pair's)."""
     angles = result.contact_angle[result.loaded]
     return {
         "ball_azimuth": result.azimuth, "Q": result.Q, "contact_angle": result.contact_angle,
@@ -187,6 +217,46 @@ def ball_reference_life(Q, C, ball_diameter, pitch_diameter, rating_contact_angl
     life = reference_rating_life(Q, C=C, ball_diameter=ball_diameter, pitch_diameter=pitch_diameter,
                                  contact_angle=rating_contact_angle, inner_osculation=osculations["inner"],
                                  outer_osculation=osculations["outer"], inner_rotates=abs(n_inner) >= abs(n_outer))
-    L10r = life["L10r"] * 1e6
+    return _life_in_time(life["L10r"], n_inner, n_outer)
+
+
+def _life_in_time(L10r_million: float, n_inner: float, n_outer: float) -> dict[str, float]:
+    """L10r [revolutions] from [10^6 revolutions] and in time [s] at the rings' relative speed [rev/s]."""
+    L10r = L10r_million * 1e6
     relative = abs(n_inner - n_outer)
     return {"L10r": L10r, "L10rh": L10r / relative if relative > 0 else math.inf}
+
+
+@step("equivalent_load", provides=("P", "e", "X", "Y"), model="iso281_ball_pair")
+def ball_pair_equivalent_load(radial_load, axial_load, arrangement, rating_contact_angle, C0, f0, ball_count,
+                              ball_diameter):
+    """Dynamic equivalent load P = X F_r + Y F_a [N] of a pair of angular-contact bearings under the pair's loads with
+    its factors e, X, Y (ISO 281:2007 Table 3: the double-row columns back to back and face to face, the single-row
+    ones in tandem; :func:`camcontact.models.iso281_ball.pair_equivalent_load`; ``C0`` [N] and ``ball_count`` of one
+    bearing). Its life is rated against the pair's C = 2^0.7 C (graph input ``C_pair``)."""
+    return pair_equivalent_load(radial_load, axial_load, arrangement=arrangement, contact_angle=rating_contact_angle,
+                                C0=C0, f0=f0, ball_count=ball_count, ball_diameter=ball_diameter)
+
+
+@step("static_safety", provides=("P0", "s0"), model="iso76_ball_pair")
+def ball_pair_static_safety(radial_load, axial_load, arrangement, rating_contact_angle, C0_pair):
+    """Static equivalent load P0 [N] of a pair (ISO 76:2006: back to back / face to face F_r + 2 Y_0 F_a, in tandem
+    the single row's; :func:`camcontact.models.iso281_ball.pair_static_equivalent_load`) and the static safety
+    factor s0 = C0_pair / P0 [-] with the pair's static rating 2 C_0 [N] (infinite without load)."""
+    P0 = pair_static_equivalent_load(radial_load, axial_load, arrangement=arrangement,
+                                     contact_angle=rating_contact_angle)
+    return {"P0": P0, "s0": C0_pair / P0 if P0 > 0.0 else math.inf}
+
+
+@step("reference_life", provides=("L10r", "L10rh"), model="iso_ts_16281_ball_pair")
+def ball_pair_reference_life(Q, ball_row, C, ball_diameter, pitch_diameter, rating_contact_angle, osculations, n_inner,
+                             n_outer):
+    """ISO/TS 16281:2008 basic reference rating life L_10r [revolutions] of a pair from the ball loads Q [N] of both
+    bearings and their ``ball_row``: each bearing's with its own C [N], combined with the Weibull slope 10/9
+    (:func:`camcontact.models.iso281_ball.pair_reference_rating_life`, as
+    :meth:`camcontact.components.BallBearing.pair_reference_life`), and in time [s] at |n_i - n_o| [rev/s]."""
+    life = pair_reference_rating_life(Q, np.asarray(ball_row).astype(int), C=C, ball_diameter=ball_diameter,
+                                      pitch_diameter=pitch_diameter, contact_angle=rating_contact_angle,
+                                      inner_osculation=osculations["inner"], outer_osculation=osculations["outer"],
+                                      inner_rotates=abs(n_inner) >= abs(n_outer))
+    return _life_in_time(life["L10r"], n_inner, n_outer)

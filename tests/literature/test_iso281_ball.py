@@ -11,6 +11,15 @@ Published numbers:
 * FAG deep-groove ball bearing 6208 (as reproduced in course notes "Antifriction Bearings 2", Example 1):
   n = 650 r/min, F_r = 3.2 kN, C_r = 22.4 kN: "L10 = 343 million rev.", "L10h = 8795 hr".
 
+* Pairs of angular-contact bearings (ISO 281 Table 3's double-row columns and ISO 76's double-row Y_0, as published in
+  Koyo's catalogue, "Calculation of equivalent radial / axial load", koyousa.com/koyocatalog/technical/03/3_1_32.htm:
+  30 deg e 0.8, F_a/F_r <= e X 1 Y 0.78, above X 0.63 Y 1.24; 40 deg e 1.14, X 1 Y 0.55, X 0.57 Y 0.93; back to back
+  and face to face X_0 1, Y_0 0.92 / 0.66 / 0.52 at 15 / 30 / 40 deg; and in LYC's "Equivalent dynamic load - angular
+  contact ball bearings", lycbearing.com: 25 deg "Fa/Fr<=0.68 P=Fr+0.92Fa, Fa/Fr>0.68 P=0.67Fr+1.41Fa", 40 deg
+  "P=Fr+0.55Fa", "P=0.57Fr+0.93Fa", the four-point contact (35 deg double-row) row "Fa/Fr<=0.95 P=Fr+0.66Fa,
+  Fa/Fr>0.95 P=0.6Fr+1.07Fa", static 25 deg "P0=Fr+0.76Fa"). The pair's C is that of one double-row bearing, i = 2
+  in Eq. 1: 2^0.7 C.
+
 Independent calculation: ISO/TR 1281-1 (§7.2.1) derives Table 3 of deep-groove bearings from the contact angle
 alpha' the axial load sets, cos(5 deg)/cos(alpha') = 1 + 0.012534 (F_a / (Z D_w^2 sin alpha'))^(2/3) [N, mm],
 with xi = 1.05, eta = 1 - sin(5 deg)/2.5: e = xi tan(alpha'), Y = 0.4 cot(alpha') / eta; the interpolated table
@@ -23,9 +32,11 @@ import pytest
 from scipy.optimize import brentq
 
 import camcontact as cc
-from camcontact.models.iso281_ball import (AXIAL_LOAD_GRID, DEEP_GROOVE_XY, ball_equivalent_load, dynamic_load_rating,
+from camcontact.models.iso281_ball import (AXIAL_LOAD_GRID, DEEP_GROOVE_XY, PAIR_XY, ball_equivalent_load,
+                                           dynamic_load_rating, pair_equivalent_load, pair_static_equivalent_load,
                                            static_equivalent_load)
 from camcontact.models.life_iso281 import A_ISO_FORMS, ISO281, a_iso_ball
+from tests.unit.test_steps_ball_bearing import angular as angular_7208  # the 7208 BE-like bearing
 
 STEEL = cc.Material(E="207 GPa", nu=0.3)
 OIL = cc.Lubricant(name="ISO VG 68", nu40="68 cSt", nu100="8.6 cSt", density="0.87 g/cm^3", alpha="2.2e-8 1/Pa")
@@ -218,3 +229,55 @@ def test_reference_life_against_iso_281_for_pure_radial_load():
     axial = run(cc.LoadedBallBearing(bearing=skf_6309(radial_clearance="30 um"), radial_load="10 kN",
                                      axial_load="2.5 kN", speed="3000 rpm"), outputs=("P", "L10", "L10r"))
     assert axial["P"] == 10e3 and axial["L10r"] > 1.05 * loose["L10r"]
+
+
+def test_double_row_factors_are_the_published_ones():
+    """The double-row rows of ISO 281 Table 3 as the catalogues print them (module docstring: Koyo 30 and 40 deg, LYC
+    25, 35 and 40 deg); the rows that could not be confirmed (20 and 45 deg, the load-dependent ones below 20 deg) are
+    not in the table, and a pair outside 25..40 deg is refused."""
+    assert PAIR_XY == {25.0: (0.68, 0.92, 0.67, 1.41), 30.0: (0.80, 0.78, 0.63, 1.24), 35.0: (0.95, 0.66, 0.60, 1.07),
+                       40.0: (1.14, 0.55, 0.57, 0.93)}
+    for degrees, (e, Y1, X2, Y2) in PAIR_XY.items():
+        below = pair_equivalent_load(1000.0, 0.99 * e * 1000.0, arrangement="back_to_back",
+                                     contact_angle=math.radians(degrees), C0=2e4, f0=None, ball_count=13,
+                                     ball_diameter=10e-3)
+        above = pair_equivalent_load(1000.0, 1.01 * e * 1000.0, arrangement="face_to_face",
+                                     contact_angle=math.radians(degrees), C0=2e4, f0=None, ball_count=13,
+                                     ball_diameter=10e-3)
+        assert below["P"] == pytest.approx(1000.0 + Y1 * 0.99 * e * 1000.0)
+        assert above["P"] == pytest.approx(X2 * 1000.0 + Y2 * 1.01 * e * 1000.0)
+    for degrees in (20.0, 45.0):
+        with pytest.raises(cc.InputError, match=f"contact angle {degrees:g} deg"):
+            pair_equivalent_load(1000.0, 500.0, arrangement="back_to_back", contact_angle=math.radians(degrees),
+                                 C0=2e4, f0=None, ball_count=13, ball_diameter=10e-3)
+    # ISO 76: X_0 = 1 and twice the single row's Y_0 (Koyo: 0.92, 0.66, 0.52 at 15, 30, 40 deg; LYC 0.76 at 25 deg)
+    for degrees, Y0 in ((15.0, 0.92), (25.0, 0.76), (30.0, 0.66), (40.0, 0.52)):
+        assert pair_static_equivalent_load(1000.0, 1000.0, arrangement="back_to_back",
+                                           contact_angle=math.radians(degrees)) == pytest.approx(1000.0 + Y0 * 1000.0)
+
+
+def test_pair_rating_life_by_hand():
+    """Two 7208 BE back to back under F_r = 5 kN, F_a = 1 kN at 3000 r/min: F_a/F_r = 0.2 <= e = 1.14, so X = 1,
+    Y = 0.55 and P = 5 + 0.55 x 1 = 5.55 kN; C of the pair 2^0.7 x 36.4 = 59.13 kN; L10 = (59.13/5.55)^3 = 1209 Mrev,
+    6719 h at 50 rev/s. Pure radial: P = F_r, L10 = (59.13/5)^3 = 1654 Mrev. Above e (F_a = 8 kN):
+    P = 0.57 x 5 + 0.93 x 8 = 10.29 kN. Face to face the same; ISO 76: P0 = 5 + 0.52 x 1 = 5.52 kN against
+    C0 = 2 x 26 kN."""
+    C_pair = 2**0.7 * 36.4e3
+    assert C_pair == pytest.approx(59.13e3, rel=1e-4)
+    for arrangement in ("back_to_back", "face_to_face"):
+        scene = cc.LoadedBallBearing(bearing=angular_7208(), radial_load="5 kN", axial_load="1 kN", speed="3000 rpm",
+                                     arrangement=arrangement, preload="5 um")
+        result = run(scene, outputs=("P", "X", "Y", "e", "L10", "L10h", "P0", "s0"))
+        assert (result["X"], result["Y"], result["e"]) == (1.0, 0.55, 1.14)
+        assert result["P"] == pytest.approx(5550.0, rel=1e-12)
+        assert result["L10"] == pytest.approx((C_pair / 5550.0) ** 3 * 1e6, rel=1e-12)
+        assert result["L10"] / 1e6 == pytest.approx(1209, abs=1.0)
+        assert result["L10h"] / 3600 == pytest.approx(6719, abs=1)
+        assert result["P0"] == pytest.approx(5520.0) and result["s0"] == pytest.approx(52e3 / 5520.0)
+    radial = run(cc.LoadedBallBearing(bearing=angular_7208(), radial_load="5 kN", speed="3000 rpm",
+                                      arrangement="back_to_back"), outputs=("P", "X", "L10"))
+    assert radial["P"] == 5e3 and radial["X"] == 1.0
+    assert radial["L10"] == pytest.approx((2**0.7 * 36.4e3 / 5e3) ** 3 * 1e6, rel=1e-12)
+    heavy = run(cc.LoadedBallBearing(bearing=angular_7208(), radial_load="5 kN", axial_load="8 kN", speed="3000 rpm",
+                                     arrangement="back_to_back"), outputs=("P", "X", "Y"))
+    assert (heavy["X"], heavy["Y"]) == (0.57, 0.93) and heavy["P"] == pytest.approx(0.57 * 5e3 + 0.93 * 8e3)

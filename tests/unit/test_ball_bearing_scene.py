@@ -1,8 +1,10 @@
 """BallBearing and LoadedBallBearing at the door, and the ball_bearing scene end to end."""
 
 import math
+import warnings
 
 import matplotlib
+import attrs
 import numpy as np
 import pytest
 
@@ -73,11 +75,36 @@ def test_scene_reports_per_ball_and_summary():
     assert "hamrock_dowson (inner raceway" in result["film_validity"]
 
 
-def test_every_nan_has_its_reason_beside_it():
+ANGULAR = dict(designation="7208 BE", kind="angular_contact", bore="40 mm", outer_diameter="80 mm", width="18 mm",
+               ball_count=13, ball_diameter="11.906 mm", contact_angle="40 deg", C="36.4 kN", C0="26 kN",
+               fatigue_load_limit="1.1 kN")
+
+
+def paired(arrangement="back_to_back", bearing_changes=None, **changes):
+    """A pair of 7208 BE-like 40 deg bearings under the pair's loads (default 5 kN + 2 kN, 10 um preload)."""
+    fields = dict(radial_load="5 kN", axial_load="2 kN", arrangement=arrangement,
+                  preload="0 um" if arrangement == "tandem" else "10 um")
+    return loaded(ANGULAR | (bearing_changes or {}), **(fields | changes))
+
+
+@pytest.mark.parametrize("scene", [
+    lambda: loaded(),
+    lambda: paired("back_to_back"),
+    lambda: paired("face_to_face", moment="20 N*m"),
+    lambda: paired("tandem", axial_load="6 kN"),
+    lambda: paired("back_to_back", axial_load="8 kN", preload="2 um"),  # preload relieved: bearing 1 unloaded
+    lambda: paired("back_to_back", {"contact_angle": "15 deg"}),  # P refused below 25 deg: NaN with the failure
+], ids=["single", "back_to_back", "face_to_face_moment", "tandem", "relieved", "refused_iso281"])
+def test_every_nan_has_its_reason_beside_it(scene):
     from camcontact.report import unexplained_values
 
-    result = cc.Analysis(loaded()).run()
-    assert unexplained_values(result.to_frame()) == [] and unexplained_values(result.summary_frame()) == []
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", StepFailureWarning)
+        result = cc.Analysis(scene()).run()
+    frame, summary = result.to_frame(), result.summary_frame()
+    assert unexplained_values(frame) == [] and unexplained_values(summary) == []
+    if result.scene.arrangement != "single":
+        assert len(frame) == 26 and set(frame["ball_row [-]"]) == {0.0, 1.0}
 
 
 def test_only_the_steps_asked_for_run():
@@ -131,3 +158,85 @@ def test_tutorial_scene_file():
     assert isinstance(scene.component, cc.LoadedBallBearing)
     result = scene.analysis().run()
     assert result["loaded_balls"] == 5 and result["P"] == pytest.approx(10e3)
+
+
+# ----------------------------------------------------------------------------- pairs of angular-contact bearings
+@pytest.mark.parametrize("bearing_changes, changes, message", [
+    ({}, dict(arrangement="back_to_back"), "arrangement = 'back_to_back' is for angular_contact bearings"),
+    (ANGULAR, dict(arrangement="tandem", preload="2 um"), "preload = 2 µm needs a pair clamped"),
+    (ANGULAR, dict(arrangement="back_to_back", preload="-2 um"), "LoadedBallBearing.preload = -2 µm is out of range"),
+    (ANGULAR, dict(preload="2 um"), "preload = 2 µm needs a pair"),
+    (ANGULAR, dict(arrangement="DB"), "LoadedBallBearing.arrangement = 'DB'; allowed: 'single', 'back_to_back'"),
+    (ANGULAR, dict(arrangement="back_to_back", row_spacing="0 mm"), "LoadedBallBearing.row_spacing = 0 mm"),
+    (ANGULAR, dict(row_spacing="20 mm"), "row_spacing = 20 mm is the distance between the bearings of a pair"),
+    (ANGULAR, dict(arrangement="back_to_back", preload=2e-6), "LoadedBallBearing.preload"),
+])
+def test_bad_pair_input_is_named(bearing_changes, changes, message):
+    with pytest.raises(InputError, match=message):
+        loaded(bearing_changes, **changes)
+
+
+def test_pair_scene_under_pure_radial_load_is_the_components_pair():
+    """Back to back without axial load: the scene's 2Z ball loads and contact angles are
+    BallBearing.pair_load_distribution's (row spacing the width B by default, or as given), both bearings share the
+    radial load alike, and each ball's Hertz pressure is its own."""
+    scene = paired(radial_load="6 kN", axial_load="0 N", preload="5 um")
+    result = cc.Analysis(scene).run()
+    direct = scene.bearing.pair_load_distribution("6 kN", "0 N", arrangement="back_to_back", preload="5 um")
+    np.testing.assert_allclose(result["Q"], direct.Q, rtol=1e-12)
+    np.testing.assert_allclose(result["contact_angle"], direct.contact_angle, rtol=1e-12)
+    assert result["ball_row"].tolist() == direct.row.tolist() == [0] * 13 + [1] * 13
+    np.testing.assert_allclose(result["Q"][:13], result["Q"][13:], rtol=1e-9)
+    assert result["axial_load_row0"] == pytest.approx(result["axial_load_row1"], rel=1e-9)
+    assert result["preload_relieved"] is False and result["p_h_inner"].shape == (26,)
+    frame = result.to_frame()
+    assert list(frame["ball_row [-]"]) == [0.0] * 13 + [1.0] * 13
+    spaced = cc.Analysis(attrs.evolve(scene, moment="50 N*m", row_spacing="36 mm"), outputs=["ring_tilt"]).run()
+    wider = scene.bearing.pair_load_distribution("6 kN", "0 N", "50 N*m", preload="5 um", row_spacing="36 mm")
+    assert spaced["ring_tilt"] == pytest.approx(wider.tilt, rel=1e-12)
+
+
+def test_tandem_pair_under_twice_the_load_is_the_single_bearing():
+    """A tandem pair under (2 F_r, 2 F_a) carries the ball loads of one bearing under (F_r, F_a) in each row, so the
+    per-ball Hertz pressures and films repeat those of the single scene."""
+    pair = cc.Analysis(paired("tandem", radial_load="4 kN", axial_load="6 kN")).run()
+    single = cc.Analysis(loaded(ANGULAR, radial_load="2 kN", axial_load="3 kN")).run()
+    np.testing.assert_allclose(pair["Q"], np.tile(single["Q"], 2), rtol=1e-9)
+    np.testing.assert_allclose(pair["p_h_inner"], np.tile(single["p_h_inner"], 2), rtol=1e-9)
+    np.testing.assert_allclose(pair["h_min_outer"], np.tile(single["h_min_outer"], 2), rtol=1e-9)
+    assert pair["axial_load_row0"] == pytest.approx(3e3, rel=1e-9) == pair["axial_load_row1"]
+    assert pair["loaded_balls"] == 2 * single["loaded_balls"] and pair["Lambda_bearing"] == single["Lambda_bearing"]
+    # ISO 281: the single row's X/Y with the pair's loads (F_a/F_r = 1.5 > e = 1.14) against 2^0.7 C
+    assert pair["P"] == pytest.approx(0.35 * 4e3 + 0.57 * 6e3) and pair["X"] == 0.35
+    assert pair["L10"] == pytest.approx((2**0.7 * 36.4e3 / pair["P"]) ** 3 * 1e6, rel=1e-12)
+    assert pair["s0"] == pytest.approx(2 * 26e3 / max(0.5 * 4e3 + 0.26 * 6e3, 4e3))
+
+
+def test_pair_steps_and_the_refused_contact_angle():
+    """A pair runs its own load and ISO steps, its modified life with the pair's P_u = 2 P_u and C = 2^0.7 C; a
+    back-to-back pair at 15 deg has no confirmed double-row factors: strict refuses it naming the angle, otherwise P
+    and L10 are NaN with the failure and the rest (ball loads, ISO 76) is reported."""
+    from camcontact.models.life_iso281 import a_iso_ball
+
+    result = cc.Analysis(paired(), outputs=["Q_max", "P", "L10", "a1", "a_ISO", "kappa", "L_nm", "L10r", "s0"]).run()
+    assert {r.model for r in result.records if r.step in ("load_distribution", "equivalent_load", "static_safety",
+                                                         "reference_life")} == {
+        "harris_ball_rigid_rings (pair)", "iso281_ball_pair", "iso76_ball_pair", "iso_ts_16281_ball_pair"}
+    assert result["L_nm"] == pytest.approx(result["a1"] * result["a_ISO"] * result["L10"], rel=1e-12)
+    assert result["a_ISO"] == pytest.approx(a_iso_ball(result["kappa"], 0.5 * 2 * 1.1e3 / result["P"]), rel=1e-12)
+    low = paired(bearing_changes={"contact_angle": "15 deg"})
+    with pytest.raises(InputError, match="contact angle 15 deg"):
+        cc.Analysis(low, outputs=["L10"], strict=True).run()
+    with pytest.warns(StepFailureWarning, match="implemented from 25 to 40 deg"):
+        lenient = cc.Analysis(low, outputs=["Q_max", "L10", "s0"]).run()
+    summary = lenient.summary_frame()
+    assert summary["L10 [Mrev]"].isna().all() and (summary["Q_max [kN]"] > 0.0).all() and (summary["s0 [-]"] > 0).all()
+    assert any("contact angle 15 deg" in failure.reason for failure in lenient.failures)
+
+
+def test_pair_plot_draws_each_bearing(tmp_path):
+    fig = cc.Analysis(paired()).run().plot()
+    labels = [line.get_label() for line in fig.axes[0].get_lines()]
+    assert labels[:2] == ["bearing 0", "bearing 1"]
+    assert "inner, bearing 1" in [line.get_label() for line in fig.axes[2].get_lines()]
+    fig.savefig(tmp_path / "pair.png")

@@ -14,7 +14,9 @@ from camcontact.contact.hertz_elliptical import hertz_elliptical
 from camcontact.errors import InputError, ValidityWarning
 from camcontact.models.iso281_ball import reference_rating_life
 from camcontact.steps.ball_bearing import (ball_bearing_equivalent_load, ball_films, ball_hertz, ball_kinematics,
-                                          ball_loads, ball_reference_life, ball_static_safety, ball_subsurface)
+                                          ball_loads, ball_pair_equivalent_load, ball_pair_loads,
+                                          ball_pair_reference_life, ball_pair_static_safety, ball_reference_life,
+                                          ball_static_safety, ball_subsurface)
 
 STEEL = cc.Material(E="207 GPa", nu=0.3)
 E_REDUCED = reduced_modulus(207e9, 0.3, 207e9, 0.3)
@@ -125,3 +127,81 @@ def test_reference_life_in_time_and_the_turning_ring():
     outer = ball_reference_life(Q, 55.3e3, D, DM, 0.0, OSCULATIONS, 0.0, 50.0)
     assert outer["L10r"] < out["L10r"]
     assert ball_reference_life(np.zeros(8), 55.3e3, D, DM, 0.0, OSCULATIONS, 50.0, 0.0)["L10r"] == math.inf
+
+
+# ----------------------------------------------------------------------------- pairs of angular-contact bearings
+def angular(**changes):
+    """A 7208 BE-like 40 deg angular-contact bearing (Z 13, D_w 11.906 mm, C 36.4 kN, C0 26 kN, B 18 mm)."""
+    fields = dict(designation="7208 BE", kind="angular_contact", bore="40 mm", outer_diameter="80 mm", width="18 mm",
+                  ball_count=13, ball_diameter="11.906 mm", contact_angle="40 deg", inner_osculation=0.52,
+                  outer_osculation=0.53, C="36.4 kN", C0="26 kN", material=STEEL)
+    return cc.BallBearing(**(fields | changes))
+
+
+def test_ball_pair_loads_per_bearing_and_the_relieved_preload():
+    """The 2Z balls of both bearings (row 0 first) as the component's pair solver gives them; each bearing's axial load
+    on its own flanks differs by the applied F_a (they balance it); the pair balances F_r; with 10 um of preload both
+    rows stay loaded under 5 kN + 2 kN, while 5 um (F_0 about 0.18 kN) is relieved under 6 kN axial (row 1 unloaded)."""
+    pair = angular()
+    out = ball_pair_loads(pair, 5e3, 2e3, None, "back_to_back", 10e-6, 18e-3)
+    direct = pair.pair_load_distribution("5 kN", "2 kN", arrangement="back_to_back", preload="10 um")
+    np.testing.assert_array_equal(out["Q"], direct.Q)
+    assert out["ball_row"].tolist() == [0.0] * 13 + [1.0] * 13 and out["Q"].size == 26
+    assert out["axial_load_row0"] - out["axial_load_row1"] == pytest.approx(2e3, rel=1e-9)
+    loaded = out["loaded"]
+    radial = np.sum(out["Q"][loaded] * np.cos(out["contact_angle"][loaded]) * np.cos(out["ball_azimuth"][loaded]))
+    assert radial == pytest.approx(5e3, rel=1e-9) and out["preload_relieved"] is False
+    assert out["loaded_balls"] == loaded.sum() and np.all(np.isnan(out["contact_angle"][~loaded]))
+    relieved = ball_pair_loads(pair, 0.0, 6e3, None, "back_to_back", 5e-6, 18e-3)
+    assert relieved["preload_relieved"] is True and relieved["axial_load_row1"] == 0.0
+    assert relieved["axial_load_row0"] == pytest.approx(6e3, rel=1e-9)
+    with pytest.raises(InputError, match="pairs are of angular_contact"):
+        ball_pair_loads(bearing(radial_clearance="10 um"), 5e3, 2e3, None, "back_to_back", 0.0, 18e-3)
+
+
+def test_ball_pair_equivalent_load_with_the_double_row_factors():
+    """Back to back (or face to face) at 40 deg: F_a/F_r <= e = 1.14 gives P = F_r + 0.55 F_a, above it
+    P = 0.57 F_r + 0.93 F_a (ISO 281 Table 3, double row), an axial load of either sign; in tandem the single row's
+    X = 0.35, Y = 0.57; at 27.5 deg halfway between the 25 and 30 deg rows; outside 25..40 deg refused."""
+    forty = math.radians(40.0)
+    low = ball_pair_equivalent_load(10e3, -2e3, "back_to_back", forty, 26e3, None, 13, 11.906e-3)
+    assert (low["X"], low["Y"], low["e"]) == (1.0, 0.55, 1.14) and low["P"] == pytest.approx(10e3 + 0.55 * 2e3)
+    high = ball_pair_equivalent_load(10e3, 20e3, "face_to_face", forty, 26e3, None, 13, 11.906e-3)
+    assert high["P"] == pytest.approx(0.57 * 10e3 + 0.93 * 20e3)
+    tandem = ball_pair_equivalent_load(10e3, 20e3, "tandem", forty, 26e3, None, 13, 11.906e-3)
+    assert tandem["P"] == pytest.approx(0.35 * 10e3 + 0.57 * 20e3)
+    mid = ball_pair_equivalent_load(10e3, 2e3, "back_to_back", math.radians(27.5), 26e3, None, 13, 11.906e-3)
+    assert mid["Y"] == pytest.approx(0.5 * (0.92 + 0.78)) and mid["e"] == pytest.approx(0.74)
+    with pytest.raises(InputError, match="contact angle 20 deg"):
+        ball_pair_equivalent_load(10e3, 2e3, "back_to_back", math.radians(20.0), 26e3, None, 13, 11.906e-3)
+    with pytest.raises(InputError, match="tandem pair points away"):
+        ball_pair_equivalent_load(10e3, -2e3, "tandem", forty, 26e3, None, 13, 11.906e-3)
+
+
+def test_ball_pair_static_safety():
+    """ISO 76 for a pair at 40 deg: back to back P0 = F_r + 2 x 0.26 F_a against 2 C0; in tandem the single row's
+    max(0.5 F_r + 0.26 F_a, F_r)."""
+    forty = math.radians(40.0)
+    out = ball_pair_static_safety(10e3, 5e3, "back_to_back", forty, 52e3)
+    assert out["P0"] == pytest.approx(10e3 + 0.52 * 5e3) and out["s0"] == pytest.approx(52e3 / 12.6e3)
+    assert ball_pair_static_safety(10e3, 5e3, "tandem", forty, 52e3)["P0"] == pytest.approx(10e3)
+    assert ball_pair_static_safety(10e3, 40e3, "tandem", forty, 52e3)["P0"] == pytest.approx(5e3 + 0.26 * 40e3)
+    assert ball_pair_static_safety(0.0, 0.0, "face_to_face", forty, 52e3)["s0"] == math.inf
+
+
+def test_ball_pair_reference_life_is_the_components():
+    """L_10r of the pair from the load step's ball loads and rows equals BallBearing.pair_reference_life's (the same
+    combination of both bearings' lives), in hours at the relative speed; with the rows swapped the same."""
+    bearing = angular()
+    loads = ball_pair_loads(bearing, 5e3, 2e3, None, "back_to_back", 10e-6, 18e-3)
+    osculations = {"inner": 0.52, "outer": 0.53}
+    out = ball_pair_reference_life(loads["Q"], loads["ball_row"], 36.4e3, 11.906e-3, bearing.d_m, math.radians(40.0),
+                                   osculations, 50.0, 0.0)
+    expected = bearing.pair_reference_life("5 kN", "2 kN", preload="10 um")
+    assert out["L10r"] == pytest.approx(expected["L10r"], rel=1e-12)
+    assert out["L10rh"] == pytest.approx(out["L10r"] / 50.0)
+    rows = expected["L10r_rows"]
+    assert out["L10r"] == pytest.approx((rows[0] ** (-10 / 9) + rows[1] ** (-10 / 9)) ** -0.9, rel=1e-12)
+    swapped = ball_pair_reference_life(loads["Q"], 1.0 - loads["ball_row"], 36.4e3, 11.906e-3, bearing.d_m,
+                                       math.radians(40.0), osculations, 50.0, 0.0)
+    assert swapped["L10r"] == pytest.approx(out["L10r"], rel=1e-12)
