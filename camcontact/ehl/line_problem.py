@@ -115,8 +115,9 @@ class LineEHLProblem:
             raise InputError(f"LineEHLProblem: alpha = {self.alpha!r}, z = {self.z!r}, p0 = {self.p0!r} must be > 0")
         if self.pressure_scale is None and self.L == 0 and self.density == "dowson_higginson":
             raise InputError(
-                "LineEHLProblem: with L = 0 the pressure scale p_h cannot follow from alpha-bar; "
-                "give pressure_scale or use density='incompressible'"
+                "LineEHLProblem: with L = 0 the pressure scale p_h cannot follow from alpha-bar; the "
+                "Dowson-Higginson density needs it (the viscosity is isoviscous at L = 0 and needs none): give "
+                "pressure_scale [Pa] or use density='incompressible'"
             )
         if self.pressure_scale is not None and not self.pressure_scale > 0:
             raise InputError(f"LineEHLProblem.pressure_scale = {self.pressure_scale!r} must be > 0")
@@ -141,6 +142,17 @@ class LineEHLProblem:
         return self.pressure_scale if self.pressure_scale is not None else self.alpha_bar / self.alpha
 
     @property
+    def alpha_law(self) -> float:
+        """alpha [1/Pa] of the Roelands law: alpha-bar / p_h, so that the law is the one L describes whatever the
+        pressure scale - ``alpha`` itself when p_h = alpha-bar / alpha (as from a contact), 0 at L = 0 (isoviscous:
+        the scale then only serves the density law). With a ``pressure_scale`` that does not match alpha-bar / alpha
+        (L = 0, or the continuation path of a start solution, which changes M and L at a fixed scale) the law
+        would otherwise stay that of the problem's alpha at p_h, whatever L."""
+        if self.pressure_scale is None or math.isclose(self.alpha * self.pressure_scale, self.alpha_bar, rel_tol=1e-9):
+            return self.alpha
+        return self.alpha_bar / self.pressure_scale
+
+    @property
     def law_codes(self) -> tuple[int, int]:
         """(viscosity, density) codes for the kernels: (0 Barus / 1 Roelands, 0 incompressible / 1 DH)."""
         return (1 if self.viscosity == "roelands" else 0, 1 if self.density == "dowson_higginson" else 0)
@@ -149,7 +161,7 @@ class LineEHLProblem:
     def law_parameters(self) -> np.ndarray:
         """[alpha-bar, p_h/p0, alpha p0 / z, z, p_h/DH_A, DH_B] for the kernels."""
         return np.array([
-            self.alpha_bar, self.p_h / self.p0, self.alpha * self.p0 / self.z, self.z,
+            self.alpha_bar, self.p_h / self.p0, self.alpha_law * self.p0 / self.z, self.z,
             self.p_h / DH_A, DH_B,
         ])
 
@@ -163,7 +175,7 @@ class LineEHLProblem:
         P = np.maximum(np.asarray(P, dtype=float), 0.0)
         if self.viscosity == "barus":
             return self.alpha_bar * P
-        return self.alpha * self.p0 / self.z * np.expm1(self.z * np.log1p(P * self.p_h / self.p0))
+        return self.alpha_law * self.p0 / self.z * np.expm1(self.z * np.log1p(P * self.p_h / self.p0))
 
     def dlog_viscosity(self, P):
         """d ln(eta-bar) / dP."""
@@ -171,7 +183,7 @@ class LineEHLProblem:
         if self.viscosity == "barus":
             return np.full_like(P, self.alpha_bar)
         ratio = self.p_h / self.p0
-        return self.alpha * self.p0 * ratio * (1.0 + P * ratio) ** (self.z - 1.0)
+        return self.alpha_law * self.p0 * ratio * (1.0 + P * ratio) ** (self.z - 1.0)
 
     def density_ratio(self, P):
         """rho-bar = rho/rho_0 [-] at dimensionless pressure P (Dowson–Higginson, or 1 if incompressible)."""

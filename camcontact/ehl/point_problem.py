@@ -121,8 +121,9 @@ class PointEHLProblem:
             if not (math.isfinite(value) and value > 0):
                 raise InputError(f"{name}.{field} = {value!r} must be finite and > 0")
         if self.pressure_scale is None and self.L == 0 and self.density == "dowson_higginson":
-            raise InputError(f"{name}: with L = 0 the pressure scale p_h cannot follow from alpha-bar; give "
-                             "pressure_scale or use density='incompressible'")
+            raise InputError(f"{name}: with L = 0 the pressure scale p_h cannot follow from alpha-bar; the "
+                             "Dowson-Higginson density needs it (the viscosity is isoviscous at L = 0 and needs none): "
+                             "give pressure_scale [Pa] or use density='incompressible'")
         if self.pressure_scale is not None and not (math.isfinite(self.pressure_scale) and self.pressure_scale > 0):
             raise InputError(f"{name}.pressure_scale = {self.pressure_scale!r} must be finite and > 0 [Pa]")
         try:
@@ -156,6 +157,17 @@ class PointEHLProblem:
         return (1.5 * self.M) ** (2.0 / 3.0)
 
     @property
+    def alpha_law(self) -> float:
+        """alpha [1/Pa] of the Roelands law: alpha-bar / p_h, so that the law is the one L describes whatever the
+        pressure scale - ``alpha`` itself when p_h = alpha-bar / alpha (as from a contact), 0 at L = 0 (isoviscous:
+        the scale then only serves the density law). With a ``pressure_scale`` that does not match alpha-bar / alpha
+        (L = 0, or the continuation path of a start solution, which changes M and L at a fixed scale) the law
+        would otherwise stay that of the problem's alpha at p_h, whatever L."""
+        if self.pressure_scale is None or math.isclose(self.alpha * self.pressure_scale, self.alpha_bar, rel_tol=1e-9):
+            return self.alpha
+        return self.alpha_bar / self.pressure_scale
+
+    @property
     def law_codes(self) -> tuple[int, int]:
         """(viscosity, density) codes for the kernels: (0 Barus / 1 Roelands, 0 incompressible / 1 DH)."""
         return (1 if self.viscosity == "roelands" else 0, 1 if self.density == "dowson_higginson" else 0)
@@ -163,7 +175,7 @@ class PointEHLProblem:
     @property
     def law_parameters(self) -> np.ndarray:
         """[alpha-bar, p_h/p0, alpha p0 / z, z, p_h/5.9e8, 1.34] (the layout of :mod:`._kernels`)."""
-        return np.array([self.alpha_bar, self.p_h / self.p0, self.alpha * self.p0 / self.z, self.z,
+        return np.array([self.alpha_bar, self.p_h / self.p0, self.alpha_law * self.p0 / self.z, self.z,
                          self.p_h / DH_A, DH_B])
 
     @property

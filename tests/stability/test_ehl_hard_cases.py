@@ -68,3 +68,23 @@ def test_stagnating_attempt_hands_over_to_the_conservative_settings():
     check = solve_multigrid(problem, 8, tolerance=1e-9, settings=MultigridSettings(**ROBUST[1]), strict=True)
     assert solution.H_min == pytest.approx(check.H_min, abs=1e-6)
     assert solution.H0 == pytest.approx(check.H0, abs=1e-6)
+
+
+def test_isoviscous_case_with_a_pressure_scale_is_isoviscous():
+    """L = 0 is the isoviscous case whatever the viscosity law: with a pressure scale for the density law the Roelands
+    law must not turn piezoviscous (it used the problem's alpha at that scale, alpha p_h = 22 instead of alpha-bar =
+    0, and M = 0.5 converged to a 3.4 times too thick film, H_min 13.4). Now L = 0 equals the Barus isoviscous
+    solution and the limit L -> 0 at the same scale; the isoviscous Moes-map corner M 0.5..5 converges (it diverged)."""
+    from camcontact.models.film_multigrid import automatic_domain
+
+    for M in (0.5, 2.0, 5.0):
+        domain = automatic_domain(M, 0.0)
+        roelands = solve_multigrid(LineEHLProblem(M=M, L=0.0, pressure_scale=1e9, domain=domain), 7, strict=True)
+        barus = solve_multigrid(LineEHLProblem(M=M, L=0.0, viscosity="barus", pressure_scale=1e9, domain=domain), 7,
+                                strict=True)
+        near = solve_multigrid(LineEHLProblem(M=M, L=1e-4, pressure_scale=1e9, domain=domain), 7, strict=True)
+        assert roelands.H_min == pytest.approx(barus.H_min, rel=1e-9)
+        assert near.H_min == pytest.approx(roelands.H_min, rel=1e-3)
+    assert LineEHLProblem(M=2.0, L=0.0, pressure_scale=1e9).alpha_law == 0.0
+    consistent = LineEHLProblem.from_contact(R=0.01, w=2e5, E_reduced=2.3e11, u_m=2.0, eta0=0.05, alpha=2e-8)
+    assert consistent.alpha_law == consistent.alpha  # a contact's scale is alpha-bar / alpha: the law is alpha's
