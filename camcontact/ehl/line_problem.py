@@ -33,7 +33,7 @@ import numpy as np
 
 from ..errors import InputError
 
-__all__ = ["LineEHLProblem", "grid_points", "kernel_coefficients"]
+__all__ = ["LineEHLProblem", "grid_points", "kernel_coefficients", "roelands_alpha"]
 
 ROELANDS_P0 = 1.96e8
 DH_A, DH_B = 5.9e8, 1.34
@@ -62,6 +62,17 @@ def kernel_coefficients(h: float, count: int) -> np.ndarray:
     lower = (d - 0.5) * h
     # int_{lower}^{upper} ln|t| dt, split at 0 for d = 0 (odd antiderivative)
     return np.where(d == 0, 2.0 * antiderivative(0.5 * h), antiderivative(upper) - np.sign(lower) * antiderivative(lower))
+
+
+def roelands_alpha(alpha: float, alpha_bar: float, pressure_scale: float | None) -> float:
+    """alpha [1/Pa] of the Roelands law of a problem with the dimensionless alpha-bar and, if given, a pressure scale
+    p_h [Pa]: alpha-bar / p_h, so that the law is the one L describes whatever the scale - ``alpha`` itself when
+    p_h = alpha-bar / alpha (as from a contact), 0 at L = 0 (isoviscous: the scale then only serves the density law).
+    Taking ``alpha`` at a scale that does not match (L = 0, or the continuation path of a start solution, which
+    changes M and L at a fixed scale) would leave the law that of alpha at p_h, whatever L."""
+    if pressure_scale is None or math.isclose(alpha * pressure_scale, alpha_bar, rel_tol=1e-9):
+        return alpha
+    return alpha_bar / pressure_scale
 
 
 @attrs.frozen
@@ -143,14 +154,8 @@ class LineEHLProblem:
 
     @property
     def alpha_law(self) -> float:
-        """alpha [1/Pa] of the Roelands law: alpha-bar / p_h, so that the law is the one L describes whatever the
-        pressure scale - ``alpha`` itself when p_h = alpha-bar / alpha (as from a contact), 0 at L = 0 (isoviscous:
-        the scale then only serves the density law). With a ``pressure_scale`` that does not match alpha-bar / alpha
-        (L = 0, or the continuation path of a start solution, which changes M and L at a fixed scale) the law
-        would otherwise stay that of the problem's alpha at p_h, whatever L."""
-        if self.pressure_scale is None or math.isclose(self.alpha * self.pressure_scale, self.alpha_bar, rel_tol=1e-9):
-            return self.alpha
-        return self.alpha_bar / self.pressure_scale
+        """alpha [1/Pa] of the Roelands law (:func:`roelands_alpha`)."""
+        return roelands_alpha(self.alpha, self.alpha_bar, self.pressure_scale)
 
     @property
     def law_codes(self) -> tuple[int, int]:

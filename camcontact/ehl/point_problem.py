@@ -47,7 +47,7 @@ import attrs
 import numpy as np
 
 from ..errors import InputError
-from .line_problem import DH_A, DH_B, ROELANDS_P0, grid_points
+from .line_problem import DH_A, DH_B, ROELANDS_P0, grid_points, roelands_alpha
 
 __all__ = ["COARSEST", "PointEHLProblem", "point_grid_points"]
 
@@ -158,14 +158,8 @@ class PointEHLProblem:
 
     @property
     def alpha_law(self) -> float:
-        """alpha [1/Pa] of the Roelands law: alpha-bar / p_h, so that the law is the one L describes whatever the
-        pressure scale - ``alpha`` itself when p_h = alpha-bar / alpha (as from a contact), 0 at L = 0 (isoviscous:
-        the scale then only serves the density law). With a ``pressure_scale`` that does not match alpha-bar / alpha
-        (L = 0, or the continuation path of a start solution, which changes M and L at a fixed scale) the law
-        would otherwise stay that of the problem's alpha at p_h, whatever L."""
-        if self.pressure_scale is None or math.isclose(self.alpha * self.pressure_scale, self.alpha_bar, rel_tol=1e-9):
-            return self.alpha
-        return self.alpha_bar / self.pressure_scale
+        """alpha [1/Pa] of the Roelands law (:func:`roelands_alpha`)."""
+        return roelands_alpha(self.alpha, self.alpha_bar, self.pressure_scale)
 
     @property
     def law_codes(self) -> tuple[int, int]:
