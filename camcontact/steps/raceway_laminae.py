@@ -34,7 +34,8 @@ CONFORMAL_HERTZ = (*(f"{q}_{race}" for q in ("b", "p_h", "contact_length", "edge
 def conformal_roller_hertz(Q, E_reduced, contact_radii, roller_length, raceway_profiles, laminae):
     """Every loaded roller's inner and outer contact sliced into ``laminae`` along its length l_we [m] with the
     conformity's gap ``raceway_profiles[race]`` (rolling-direction radii ``contact_radii[race]`` [m]): the largest
-    lamina pressure p_h [Pa] with its half-width b [m], the loaded length [m] (:attr:`LaminaResult.loaded_length`), whether the end laminae carry load
+    lamina pressure p_h [Pa] with its half-width b [m], the loaded length [m]
+    (:attr:`~camcontact.contact.roller_profile.LaminaResult.loaded_length`), whether the end laminae carry load
     (``edge_loaded``), NaN / False for unloaded rollers; the peak pressure and the lamina results per race
     (``raceway_laminae[race][roller]``, None where unloaded)."""
     out = {}
