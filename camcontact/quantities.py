@@ -35,7 +35,7 @@ _UNLOADED = (("loaded", False), ("contact_regime", "unloaded"))
 _NAN_WHEN = {
     **{f"{q}_{race}": _UNLOADED for q in ("b", "p_h", "h_c", "h_min", "Lambda", "flash_temperature",
                                           "rolling_resistance", "asperity_load_fraction", "h_c_mixed", "a_rolling",
-                                          "a_transverse", "contact_length")
+                                          "a_transverse", "contact_length", "truncation_margin")
        for race in ("inner", "outer")},
     "contact_angle": _UNLOADED,
     "x_q_max": _UNLOADED,
@@ -268,6 +268,13 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("a_rolling_outer", "m", "um", "Hertz semi-axis along rolling at the outer raceway"),
         _q("a_transverse_outer", "m", "um", "Hertz semi-axis across rolling at the outer raceway"),
         _q("most_loaded_race", None, None, "raceway of the contact with the highest pressure"),
+        _q("truncation_margin_inner", "rad", "deg", "angle left between the inner contact ellipse's edge and the shoulder "
+                                                    "(negative: truncated)"),
+        _q("truncation_margin_outer", "rad", "deg", "angle left between the outer contact ellipse's edge and the shoulder "
+                                                    "(negative: truncated)"),
+        _q("truncated_inner", None, None, "True where the inner contact ellipse runs over the shoulder"),
+        _q("truncated_outer", None, None, "True where the outer contact ellipse runs over the shoulder"),
+        _q("truncated_balls", "", "", "number of balls whose contact ellipse runs over a shoulder"),
         _q("e", "", "", "ISO 281 limit of F_a/F_r for the axial-load factors"),
         _q("X", "", "", "ISO 281 radial load factor"),
         _q("Y", "", "", "ISO 281 axial load factor"),

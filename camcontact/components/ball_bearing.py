@@ -79,6 +79,10 @@ class BallBearing(Component):
         Rings and balls (needed for the load distribution's Hertz stiffness, stresses and films).
     roughness : Quantity or str, optional
         RMS roughness of each surface [length] (composite = sqrt(2) times it).
+    inner_shoulder_diameter, outer_shoulder_diameter : Quantity or str, optional
+        Diameters of the inner ring's and the outer ring's shoulders (lands) beside the grooves [length], both or
+        neither (catalogues print them, e.g. SKF's d_1 and D_2, as approximate values). With them the scene checks
+        whether each contact ellipse runs over a shoulder (:attr:`shoulder_angles`).
     name : str
 
     Examples
@@ -111,6 +115,8 @@ class BallBearing(Component):
     f0: float = number_field(optional=True, validators=[positive()])
     material: Material | None = attrs.field(default=None, validator=attrs.validators.optional(instance_of(Material)))
     roughness: Quantity = quantity_field("[length]", optional=True, validators=[non_negative("m")])
+    inner_shoulder_diameter: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    outer_shoulder_diameter: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
     def __attrs_post_init__(self) -> None:
         si, where = self.si, f"BallBearing {self.designation or self.name!r}"
@@ -134,6 +140,24 @@ class BallBearing(Component):
                 raise InputError(f"{where}: radial_clearance = {self.radial_clearance} gives a free contact angle of "
                                  f"{math.degrees(self.free_contact_angle):.3g} deg, above the {MAX_CONTACT_ANGLE:g} deg of "
                                  "a radial bearing (the clearance is too large for the grooves)")
+        self._check_shoulders(where)
+
+    def _check_shoulders(self, where: str) -> None:
+        if (self.inner_shoulder_diameter is None) != (self.outer_shoulder_diameter is None):
+            raise InputError(f"{where}: inner_shoulder_diameter = {self.inner_shoulder_diameter}, outer_shoulder_diameter "
+                             f"= {self.outer_shoulder_diameter}; give both or neither")
+        if self.inner_shoulder_diameter is None:
+            return
+        centres, radii = self.groove_centre_radii, self.groove_radii
+        bounds = {"inner": (2.0 * (centres["inner"] - radii["inner"]), 2.0 * centres["inner"]),
+                  "outer": (2.0 * centres["outer"], 2.0 * (centres["outer"] + radii["outer"]))}
+        for race, (low, high) in bounds.items():
+            field = f"{race}_shoulder_diameter"
+            value = getattr(self.si, field)
+            if not low < value < high:
+                raise InputError(f"{where}: {field} = {getattr(self, field)}; allowed between {low * 1e3:.4g} and "
+                                 f"{high * 1e3:.4g} mm (the shoulder must rise above the groove's bottom and stay below "
+                                 "the groove's curvature centre)")
 
     # ------------------------------------------------------------------ derived geometry (SI)
     @property
@@ -153,6 +177,34 @@ class BallBearing(Component):
         if self.kind == "angular_contact":
             return self.si.contact_angle
         return math.acos(max(-1.0, min(1.0, 1.0 - self.si.radial_clearance / (2.0 * self.groove_distance))))
+
+    @property
+    def groove_radii(self) -> dict[str, float]:
+        """Groove radii r = f D_w [m] of the inner and outer raceway."""
+        D = self.si.ball_diameter
+        return {"inner": self.inner_osculation * D, "outer": self.outer_osculation * D}
+
+    @property
+    def groove_centre_radii(self) -> dict[str, float]:
+        """Radii [m] of the circles the grooves' curvature centres lie on (radial section, unloaded, at the free contact
+        angle alpha_0): d_m/2 + (f_i - 1/2) D_w cos(alpha_0) inner, d_m/2 - (f_o - 1/2) D_w cos(alpha_0) outer (Harris &
+        Kotzalas 2007, ch. 2)."""
+        D, c = self.si.ball_diameter, math.cos(self.free_contact_angle)
+        return {"inner": 0.5 * self.d_m + (self.inner_osculation - 0.5) * D * c,
+                "outer": 0.5 * self.d_m - (self.outer_osculation - 0.5) * D * c}
+
+    @property
+    def shoulder_angles(self) -> dict[str, float] | None:
+        """The angle [rad] from the radial direction, seen from each groove's curvature centre, at which the groove
+        meets its shoulder: cos(theta) = (rho_i - d_s/2) / r_i inner, (D_s/2 - rho_o) / r_o outer (rho the centre
+        radii of :attr:`groove_centre_radii`, r the groove radii). A contact whose ellipse reaches past it (contact
+        angle plus the ellipse's half-width across rolling over r) is truncated by the shoulder (Harris & Kotzalas
+        2007, ch. 7: the truncation of the contact ellipse under heavy axial load). None without the shoulders."""
+        if self.inner_shoulder_diameter is None:
+            return None
+        centres, radii = self.groove_centre_radii, self.groove_radii
+        return {"inner": math.acos((centres["inner"] - 0.5 * self.si.inner_shoulder_diameter) / radii["inner"]),
+                "outer": math.acos((0.5 * self.si.outer_shoulder_diameter - centres["outer"]) / radii["outer"])}
 
     @property
     def rating_contact_angle(self) -> float:

@@ -13,6 +13,10 @@ A :class:`~camcontact.components.LoadedBallBearing` becomes the steps (:mod:`cam
     exact elliptical Hertz at the inner and outer raceway of every loaded ball at its contact angle
     (R_x = (D/2)(1 -/+ gamma), R_y = f D/(2f - 1)); p_h against the contact stress limit (ISO 76's
     4.2 GPa);
+``truncation``
+    with the rings' shoulder diameters (``BallBearing.inner_shoulder_diameter`` / ``outer_shoulder_diameter``): per
+    ball and race the angle left between the contact ellipse's edge (|alpha| + a_y / (f D)) and the shoulder
+    (``truncation_margin_<race>``), ``truncated_<race>`` and the number of truncated balls;
 ``subsurface``
     the largest Tresca shear and von Mises stress and their depths below the contact of highest pressure;
 ``lubricant``, ``film``, ``lambda_inner``, ``lambda_outer``, ``lubrication``
@@ -52,7 +56,8 @@ from ..models.iso281_ball import pair_load_ratings
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.ball_bearing import (ball_bearing_equivalent_load, ball_films, ball_hertz, ball_kinematics, ball_loads,
                                   ball_pair_equivalent_load, ball_pair_loads, ball_pair_reference_life,
-                                  ball_pair_static_safety, ball_reference_life, ball_static_safety, ball_subsurface)
+                                  ball_pair_static_safety, ball_reference_life, ball_static_safety, ball_subsurface,
+                                  ball_truncation)
 from ..steps.contact import RACES
 from ..steps.film import bearing_lubrication, films_of, raceway_lambda_steps, resolve_film_model
 from ..steps.life import modified_rating_life, rating_life
@@ -65,13 +70,15 @@ SUPPORTED_EFFECTS = frozenset({"elasticity", "piezoviscosity"})
 DEFAULT_FILM = "hamrock_dowson"
 PER_BALL = frozenset({
     "ball_row", "ball_azimuth", "Q", "contact_angle", "loaded", "ball_approach", "u_m", "ball_speed", "contact_regime",
-    *(f"{q}_{race}" for q in ("a_rolling", "a_transverse", "p_h", "h_c", "h_min", "Lambda") for race in RACES),
+    *(f"{q}_{race}" for q in ("a_rolling", "a_transverse", "p_h", "h_c", "h_min", "Lambda", "truncation_margin",
+                              "truncated") for race in RACES),
 })
 DEFAULT_OUTPUTS = (
     "ball_row", "ball_azimuth", "Q", "contact_angle", "loaded", "p_h_inner", "p_h_outer", "a_transverse_inner",
     "a_transverse_outer", "h_min_inner", "h_min_outer", "Lambda_inner", "Lambda_outer", "contact_regime",
     "Q_max", "loaded_balls", "load_zone", "delta_r", "delta_a", "contact_angle_max", "contact_angle_min",
-    "tilting_moment", "axial_load_row0", "axial_load_row1", "preload_relieved", "p_h_max", "stress_limit_exceeded",
+    "tilting_moment", "axial_load_row0", "axial_load_row1", "preload_relieved", "truncated_inner", "truncated_outer",
+    "truncated_balls", "p_h_max", "stress_limit_exceeded",
     "tau_max", "z_tau_max", "cage_speed", "h_min_bearing", "Lambda_bearing", "film_valid", "film_validity",
     "viscosity_extrapolated", "P", "X", "Y", "P0", "s0", "L10", "L10h", "kappa", "a_ISO", "L_nm", "L_nmh", "L10r",
     "L10rh",
@@ -83,6 +90,7 @@ HINTS = {
     "E_reduced": "set BallBearing.material (Hertz needs E and nu)",
     "fatigue_load_limit": "set BallBearing.fatigue_load_limit (P_u from the catalogue)",
     "fatigue_load_limit_pair": "set BallBearing.fatigue_load_limit (P_u of one bearing; the pair's is 2 P_u)",
+    "shoulder_angles": "set BallBearing.inner_shoulder_diameter and outer_shoulder_diameter (the rings' lands)",
     "contamination": "set LoadedBallBearing.contamination (ISO 281 factor e_C, 0 < e_C <= 1)",
 }
 
@@ -111,7 +119,8 @@ def ball_bearing_inputs(scene: LoadedBallBearing, effects: frozenset) -> dict[st
     if material is not None:
         inputs["E_reduced"] = reduced_modulus(material.si.E, material.nu, material.si.E, material.nu)
         inputs["nu"] = material.nu
-    inputs |= given(sigma=b_si.roughness, fatigue_load_limit=b_si.fatigue_load_limit, contamination=scene.contamination)
+    inputs |= given(sigma=b_si.roughness, fatigue_load_limit=b_si.fatigue_load_limit, contamination=scene.contamination,
+                    shoulder_angles=bearing.shoulder_angles)
     if scene.paired:
         pair = pair_load_ratings(inputs["C"], b_si.C0, b_si.fatigue_load_limit)
         inputs |= given(C_pair=pair["C"], C0_pair=pair["C0"], fatigue_load_limit_pair=pair["fatigue_load_limit"])
@@ -148,7 +157,8 @@ def build_ball_bearing(scene: LoadedBallBearing, *, models: Mapping[str, Any], e
     films = films_of(film_model)
     basis = "h_min" if "h_min" in films else "h_c"
     steps = [
-        *arrangement_steps(scene), Step.of(ball_kinematics), Step.of(ball_hertz), Step.of(ball_subsurface),
+        *arrangement_steps(scene), Step.of(ball_kinematics), Step.of(ball_hertz), Step.of(ball_truncation),
+        Step.of(ball_subsurface),
         lubricant_step(scene.lubricant, scene.si.temperature),
         Step.of(ball_films, provides=(*(f"{q}_{race}" for q in films for race in RACES), "h_min_bearing",
                                       "film_validity", "film_valid")),

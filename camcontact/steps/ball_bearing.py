@@ -31,7 +31,7 @@ from ..step_graph import step
 from .contact import RACES
 from .film import films_of, model_name, model_version
 
-__all__ = ["BALL_LOADS", "PAIR_LOADS", "ball_bearing_equivalent_load", "ball_films", "ball_hertz", "ball_kinematics",
+__all__ = ["BALL_LOADS", "PAIR_LOADS", "TRUNCATION", "ball_truncation", "ball_bearing_equivalent_load", "ball_films", "ball_hertz", "ball_kinematics",
            "ball_loads", "ball_pair_equivalent_load", "ball_pair_loads", "ball_pair_reference_life",
            "ball_pair_static_safety", "ball_reference_life", "ball_static_safety", "ball_subsurface"]
 
@@ -112,6 +112,31 @@ def ball_hertz(Q, contact_angle, ball_diameter, pitch_diameter, osculations, E_r
                       f"{contact_stress_limit * 1e-9:.3g} GPa (LoadedBallBearing.contact_stress_limit; default: ISO "
                       "76:2006, static rating of ball bearings, 4.2 GPa)", ValidityWarning, stacklevel=2)
     return {**out, "p_h_max": p_max, "stress_limit_exceeded": bool(exceeded)}
+
+
+#: what :func:`ball_truncation` provides
+TRUNCATION = (*(f"{q}_{race}" for q in ("truncation_margin", "truncated") for race in RACES), "truncated_balls")
+
+
+@step("truncation", provides=TRUNCATION, model="shoulder angle")
+def ball_truncation(Q, contact_angle, a_transverse_inner, a_transverse_outer, shoulder_angles, osculations,
+                    ball_diameter):
+    """Whether each loaded ball's contact ellipse runs over a shoulder: the ellipse reaches |alpha| + a_y / r from the
+    radial direction seen from the groove's curvature centre (a_y its half-width across rolling [m], r = f D_w the
+    groove radius [m]); the shoulder sits at ``shoulder_angles[race]`` [rad]
+    (:attr:`camcontact.components.BallBearing.shoulder_angles`). Per ball and race the margin theta_s - |alpha| -
+    a_y / r [rad] (negative: truncated; NaN for unloaded balls) and ``truncated``; the number of balls truncated at
+    either raceway. The Hertz pressure of a truncated contact rises above the untruncated one computed here."""
+    loaded = Q > 0.0
+    widths = {"inner": a_transverse_inner, "outer": a_transverse_outer}
+    out = {}
+    for race in RACES:
+        reach = np.abs(contact_angle) + widths[race] / (osculations[race] * ball_diameter)
+        margin = np.where(loaded, shoulder_angles[race] - reach, np.nan)
+        out[f"truncation_margin_{race}"] = margin
+        out[f"truncated_{race}"] = loaded & (np.nan_to_num(margin, nan=1.0) < 0.0)
+    out["truncated_balls"] = float(np.count_nonzero(out["truncated_inner"] | out["truncated_outer"]))
+    return out
 
 
 @step("subsurface", provides=("tau_max", "z_tau_max", "von_mises_max", "z_von_mises_max", "most_loaded_race"),

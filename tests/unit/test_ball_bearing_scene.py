@@ -240,3 +240,43 @@ def test_pair_plot_draws_each_bearing(tmp_path):
     assert labels[:2] == ["bearing 0", "bearing 1"]
     assert "inner, bearing 1" in [line.get_label() for line in fig.axes[2].get_lines()]
     fig.savefig(tmp_path / "pair.png")
+
+
+def test_shoulder_truncation_under_a_growing_axial_load():
+    """The 6309 with assumed shoulder diameters of a low land (0.15 D_w above each groove's bottom: 60.3 mm inner,
+    84.7 mm outer; 0.2 D_w is more usual and keeps 4.5 deg even at 30 kN): the scene's margin is the shoulder angle of the geometry (computed here from the
+    groove radii and centres) minus |alpha| and the ellipse's half-width over the groove radius; it shrinks as the
+    axial load raises the contact angles, and a heavy thrust runs the ellipses over the shoulders (truncated), which
+    pure radial load does not. Without shoulder diameters the outputs are not offered, with the hint."""
+    D = 17.462e-3
+    bearing = cc.BallBearing(designation="6309", bore="45 mm", outer_diameter="100 mm", width="25 mm", ball_count=8,
+                             ball_diameter="17.462 mm", inner_osculation=0.52, outer_osculation=0.53,
+                             radial_clearance="15 um", C="55.3 kN", C0="31.5 kN", material=cc.Material(E="207 GPa", nu=0.3),
+                             inner_shoulder_diameter=f"{55.032 + 0.3 * 17.462} mm",
+                             outer_shoulder_diameter=f"{89.971 - 0.3 * 17.462} mm")
+    d_m, c = 72.5e-3, math.cos(bearing.free_contact_angle)
+    rho_i, rho_o = d_m / 2 + 0.02 * D * c, d_m / 2 - 0.03 * D * c
+    theta_i = math.acos((rho_i - bearing.si.inner_shoulder_diameter / 2) / (0.52 * D))
+    theta_o = math.acos((bearing.si.outer_shoulder_diameter / 2 - rho_o) / (0.53 * D))
+    assert bearing.shoulder_angles == pytest.approx({"inner": theta_i, "outer": theta_o}, rel=1e-12)
+    wanted = ["contact_angle", "a_transverse_inner", "truncation_margin_inner", "truncated_inner", "truncated_balls",
+              "loaded"]
+    margins = []
+    for axial in ("0 kN", "5 kN", "30 kN"):
+        scene = cc.LoadedBallBearing(bearing=bearing, radial_load="2 kN", axial_load=axial, speed="3000 rpm")
+        result = cc.Analysis(scene, outputs=wanted).run()
+        loaded = np.asarray(result["loaded"])
+        alpha, width = np.asarray(result["contact_angle"])[loaded], np.asarray(result["a_transverse_inner"])[loaded]
+        margin = np.asarray(result["truncation_margin_inner"])[loaded]
+        np.testing.assert_allclose(margin, theta_i - np.abs(alpha) - width / (0.52 * D), rtol=1e-12)
+        margins.append(margin.min())
+    assert margins[0] > margins[1] > margins[2] and margins[0] > 0.0 > margins[2]
+    assert result["truncated_balls"] > 0 and np.asarray(result["truncated_inner"]).any()
+    plain = cc.LoadedBallBearing(bearing=attrs.evolve(bearing, inner_shoulder_diameter=None,
+                                                      outer_shoulder_diameter=None), radial_load="2 kN", speed="3000 rpm")
+    with pytest.raises(InputError, match="shoulder_diameter"):
+        cc.Analysis(plain, outputs=["truncated_inner"])
+    with pytest.raises(InputError, match="give both or neither"):
+        attrs.evolve(bearing, outer_shoulder_diameter=None)
+    with pytest.raises(InputError, match="inner_shoulder_diameter"):
+        attrs.evolve(bearing, inner_shoulder_diameter="80 mm")

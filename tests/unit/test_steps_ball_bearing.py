@@ -16,7 +16,8 @@ from camcontact.models.iso281_ball import reference_rating_life
 from camcontact.steps.ball_bearing import (ball_bearing_equivalent_load, ball_films, ball_hertz, ball_kinematics,
                                           ball_loads, ball_pair_equivalent_load, ball_pair_loads,
                                           ball_pair_reference_life, ball_pair_static_safety, ball_reference_life,
-                                          ball_static_safety, ball_subsurface)
+                                          ball_static_safety, ball_subsurface, ball_truncation)
+from tests.unit.step_checks import assert_provides
 
 STEEL = cc.Material(E="207 GPa", nu=0.3)
 E_REDUCED = reduced_modulus(207e9, 0.3, 207e9, 0.3)
@@ -205,3 +206,25 @@ def test_ball_pair_reference_life_is_the_components():
     swapped = ball_pair_reference_life(loads["Q"], 1.0 - loads["ball_row"], 36.4e3, 11.906e-3, bearing.d_m,
                                        math.radians(40.0), osculations, 50.0, 0.0)
     assert swapped["L10r"] == pytest.approx(out["L10r"], rel=1e-12)
+
+
+# ----------------------------------------------------------------------------- shoulder truncation
+def test_ball_truncation_margin_and_flag():
+    """theta_s - |alpha| - a_y / (f D) per loaded ball and race, by hand: a 40 deg contact with a 2 mm half-width in a
+    groove of r = 0.52 x 12.7 mm against a 50 deg shoulder keeps 10 deg - 17.4 deg < 0 (truncated); the same ball at
+    20 deg keeps 12.6 deg; an unloaded ball has no margin (NaN) and is not truncated."""
+    Q = np.array([1000.0, 800.0, 0.0])
+    alpha = np.radians([40.0, 20.0, np.nan])
+    a_y = np.array([2e-3, 2e-3, np.nan])
+    shoulders = {"inner": math.radians(50.0), "outer": math.radians(60.0)}
+    osculations = {"inner": 0.52, "outer": 0.53}
+    out = ball_truncation(Q, alpha, a_y, a_y, shoulders, osculations, 12.7e-3)
+    assert_provides(ball_truncation, out)
+    for race, f in osculations.items():
+        expected = shoulders[race] - alpha[:2] - 2e-3 / (f * 12.7e-3)
+        np.testing.assert_allclose(out[f"truncation_margin_{race}"][:2], expected, rtol=1e-12)
+        assert math.isnan(out[f"truncation_margin_{race}"][2]) and not out[f"truncated_{race}"][2]
+    assert out["truncated_inner"].tolist() == [True, False, False]
+    assert out["truncated_outer"].tolist() == [bool(60.0 - 40.0 - math.degrees(2e-3 / (0.53 * 12.7e-3)) < 0), False,
+                                               False]
+    assert out["truncated_balls"] == 1.0
