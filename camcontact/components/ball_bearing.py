@@ -81,8 +81,10 @@ class BallBearing(Component):
         RMS roughness of each surface [length] (composite = sqrt(2) times it).
     inner_shoulder_diameter, outer_shoulder_diameter : Quantity or str, optional
         Diameters of the inner ring's and the outer ring's shoulders (lands) beside the grooves [length], both or
-        neither (catalogues print them, e.g. SKF's d_1 and D_2, as approximate values). With them the scene checks
-        whether each contact ellipse runs over a shoulder (:attr:`shoulder_angles`).
+        neither (catalogues print them, e.g. SKF's d_1 and D_2, as approximate values): of an angular-contact
+        bearing the shoulders on the side its contact angle points to (the thrust side); a deep-groove bearing's are
+        alike on both sides. With them the scene checks whether each contact ellipse runs over a shoulder
+        (:attr:`shoulder_angles`).
     name : str
 
     Examples
