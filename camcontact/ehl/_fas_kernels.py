@@ -11,6 +11,12 @@ coarse grids 255 times). The kernels take the operator's speed ratio s and squee
 (:mod:`camcontact.ehl._kernels`): s = 1, c_t = 0 for the steady solver, a step's values for the
 transient one (:mod:`camcontact.ehl.line_transient`). As with :mod:`camcontact.ehl._kernels`, each function is plain Python
 that :func:`compiled` hands to numba; the tests run the twins on small grids.
+
+For developers: numba's on-disk cache of :func:`fas_cycle` and :func:`coarse_newton` is checked against this file
+only, not against the helpers of :mod:`camcontact.ehl._kernels` it inlines (measured: after an edit to
+``relax_hybrid`` the cached cycle kept the old smoother, even after touching this file). After editing
+``_kernels.py``, delete ``camcontact/ehl/__pycache__/_fas_kernels.*.nbi`` and ``*.nbc``; a fresh clone (CI) has no
+cache.
 """
 
 from __future__ import annotations
