@@ -38,7 +38,8 @@ from scipy.optimize import brentq
 from ..errors import ConvergenceError, InputError
 from .hertz_line import hertz_line_arrays
 
-__all__ = ["ISO_LAMINA_STIFFNESS", "LaminaLoadDistribution", "iso_default_profile", "solve_lamina_load_distribution"]
+__all__ = ["ISO_LAMINA_STIFFNESS", "LaminaLoadDistribution", "iso_default_profile", "loaded_length",
+           "solve_lamina_load_distribution"]
 
 #: c_L = 35948 L_we^(8/9) [N/mm^(10/9)], a steel roller between both raceways (ISO/TS 16281)
 ISO_LAMINA_STIFFNESS = 35948.0
@@ -58,6 +59,25 @@ def iso_default_profile(x, roller_diameter: float, roller_length: float) -> np.n
     flat = 0.5 * (L - 2.5 * D)
     s = np.clip((2.0 * x - 2.0 * flat) / (2.5 * D), 0.0, None)
     return np.where(x <= flat, 0.0, 0.0005 * D * np.log(1.0 / (1.0 - s**2)))
+
+
+def loaded_length(x: np.ndarray, approach: np.ndarray) -> float:
+    """Length of a roller's loaded contact [m] from the approach (compression) of its laminae at their centres ``x``
+    [m] (equally spaced; positive: loaded): from where the approach crosses zero, linear between the centres, or the
+    roller's end half a lamina beyond the last centre, to the same at the other side - so the laminae's width does
+    not quantise it; 0 without a loaded lamina."""
+    loaded = np.flatnonzero(approach > 0.0)
+    if loaded.size == 0:
+        return 0.0
+    half_width = 0.5 * (x[1] - x[0])
+
+    def edge(inside: int, outside: int, end: float) -> float:
+        if outside < 0 or outside >= x.size:
+            return end
+        return x[outside] + (x[inside] - x[outside]) * approach[outside] / (approach[outside] - approach[inside])
+
+    first, last = int(loaded[0]), int(loaded[-1])
+    return float(edge(last, last + 1, x[-1] + half_width) - edge(first, first - 1, x[0] - half_width))
 
 
 @attrs.frozen
@@ -84,6 +104,11 @@ class LaminaLoadDistribution:
     def loaded(self) -> np.ndarray:
         """Rollers in contact (Q > 0)."""
         return self.Q > 0.0
+
+    @property
+    def loaded_lengths(self) -> np.ndarray:
+        """Each roller's loaded length [m] (:func:`loaded_length` of its compressions; 0 for an unloaded roller)."""
+        return np.array([loaded_length(self.x, c) for c in self.compression])
 
     @property
     def load_per_length(self) -> np.ndarray:

@@ -46,7 +46,7 @@ from scipy.optimize import brentq
 from ..errors import ConvergenceError, InputError
 from .dry_contact import DryContact, solve_dry_contact
 from .hertz_line import hertz_line, hertz_line_arrays, line_approach
-from .lamina_load_distribution import iso_default_profile
+from .lamina_load_distribution import iso_default_profile, loaded_length
 
 __all__ = ["PROFILE_KINDS", "LaminaResult", "RollerProfile", "roller_dry_contact", "solve_laminae"]
 
@@ -128,19 +128,7 @@ class LaminaResult:
         """Length of the loaded contact along the roller [m]: from where the approach delta - c + theta y crosses zero
         (linear between the lamina centres, so the slices' width does not quantise it) or the roller's end, to the
         same at the other side; 0 without load."""
-        loaded = np.flatnonzero(self.load > 0.0)
-        if loaded.size == 0:
-            return 0.0
-        y, a = self.y, self.approach
-        half_width = 0.5 * (y[1] - y[0])
-
-        def edge(inside: int, outside: int, end: float) -> float:
-            if outside < 0 or outside >= y.size:
-                return end
-            return y[outside] + (y[inside] - y[outside]) * a[outside] / (a[outside] - a[inside])
-
-        first, last = int(loaded[0]), int(loaded[-1])
-        return edge(last, last + 1, y[-1] + half_width) - edge(first, first - 1, y[0] - half_width)
+        return loaded_length(self.y, self.approach)
 
     def to_frame(self):
         """One row per lamina: y [mm], load [N], load per length [N/mm], pressure [MPa], approach [um]."""

@@ -43,11 +43,11 @@ def lamina_loads(bearing, radial_load, misalignment, laminae):
 def lamina_hertz(lamina_loads, E_reduced, contact_radii):
     """The largest Hertz pressure along every roller at the inner and outer raceway [Pa] (each lamina a line contact
     under its load per length, the rolling-direction radii ``contact_radii[race]`` [m]) with the half-width there
-    [m], NaN for unloaded rollers, and the bearing's peak pressure; the loaded length of every roller [m] (its
-    laminae in contact; the same at both raceways)."""
+    [m], NaN for unloaded rollers, and the bearing's peak pressure; the loaded length of every roller [m] (where its
+    laminae's compression crosses zero, interpolated; the same at both raceways)."""
     result = lamina_loads
     w = result.load_per_length.max(axis=1)
-    length = np.where(result.loaded, (result.x[1] - result.x[0]) * np.count_nonzero(result.q > 0.0, axis=1), np.nan)
+    length = np.where(result.loaded, result.loaded_lengths, np.nan)
     out = {"contact_length_inner": length, "contact_length_outer": length.copy()}
     for race in RACES:
         b, p = hertz_line_arrays(w, contact_radii[race], E_reduced)

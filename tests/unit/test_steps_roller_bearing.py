@@ -42,6 +42,19 @@ def test_lamina_hertz_is_the_most_loaded_lamina():
     assert out["p_h_inner"][0] == pytest.approx(expected.p_h, rel=1e-12)
     assert out["b_inner"][0] == pytest.approx(expected.b, rel=1e-12)
     assert out["p_h_max"] == pytest.approx(np.nanmax(out["p_h_inner"])) and np.isnan(out["p_h_outer"][6])
+    # the loaded length: where the compression crosses zero, between the lamina centres (by hand for the lightly loaded
+    # roller whose crowned ends lift), not a count of whole laminae; NaN for an unloaded roller
+    width = result.x[1] - result.x[0]
+    j = int(np.argmin(np.where(result.loaded, result.Q, np.inf)))
+    c = result.compression[j]
+    k = int(np.flatnonzero(c > 0.0)[-1])
+    right = result.x[k + 1] + (result.x[k] - result.x[k + 1]) * c[k + 1] / (c[k + 1] - c[k])
+    k0 = int(np.flatnonzero(c > 0.0)[0])
+    left = result.x[k0 - 1] + (result.x[k0] - result.x[k0 - 1]) * c[k0 - 1] / (c[k0 - 1] - c[k0])
+    assert out["contact_length_inner"][j] == pytest.approx(right - left, rel=1e-12)
+    counted = width * np.count_nonzero(c > 0.0)
+    assert abs(out["contact_length_inner"][j] - counted) < width and out["contact_length_inner"][j] < 0.01
+    assert np.isnan(out["contact_length_outer"][6])
 
 
 def test_equivalent_load_and_reference_life():
