@@ -11,7 +11,7 @@ A :class:`~camcontact.components.LoadedCylindricalRollerBearing` becomes the ste
     pure rolling (cage speed, roller speed, entrainment speed u_m of both raceway contacts);
 ``hertz``
     the largest lamina pressure along every roller at both raceways (each lamina a Hertz line contact) and the
-    loaded length of every roller ``contact_length_<race>`` (its laminae in contact);
+    loaded length of every roller ``contact_length_<race>`` (where its laminae's compression crosses zero);
 ``lubricant``, ``film``, ``lambda_inner``, ``lambda_outer``, ``lubrication``
     films of every loaded roller at both raceways by a line film model (slot ``film``, default
     ``"pan_hamrock"``; the mean load per length over the loaded length), Lambda with the bearing's roughness, the regime;
