@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import attrs
 
-from ..contact.ball_load_distribution import PAIR_ARRANGEMENTS
+from ..contact.ball_load_distribution import OPPOSED_ARRANGEMENTS, PAIR_ARRANGEMENTS
 from ..errors import InputError
 from ..units import Quantity, format_quantity, instance_of, non_negative, one_of, positive, quantity_field, text
 from .ball_bearing import BallBearing
@@ -22,8 +22,6 @@ __all__ = ["ARRANGEMENTS", "LoadedBallBearing"]
 
 #: one bearing, or one of a pair of identical angular-contact bearings on one shaft
 ARRANGEMENTS = ("single", *PAIR_ARRANGEMENTS)
-#: the arrangements that clamp the pair against each other, so that it can be preloaded
-PRELOADED_ARRANGEMENTS = ("back_to_back", "face_to_face")
 
 
 @attrs.frozen(kw_only=True)
@@ -95,7 +93,7 @@ class LoadedBallBearing(BearingService):
             raise InputError(f"{where}: arrangement = {self.arrangement!r} is for angular_contact bearings; "
                              f"BallBearing {self.bearing.designation or self.bearing.name!r} is {self.bearing.kind} "
                              "(allowed: 'single')")
-        if self.si.preload != 0.0 and self.arrangement not in PRELOADED_ARRANGEMENTS:
+        if self.si.preload != 0.0 and self.arrangement not in OPPOSED_ARRANGEMENTS:
             raise InputError(f"{where}: preload = {format_quantity(self.preload)} needs a pair clamped against each "
                              f"other (arrangement 'back_to_back' or 'face_to_face'); with arrangement = "
                              f"{self.arrangement!r} allowed: '0 um'")

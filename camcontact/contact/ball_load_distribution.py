@@ -63,13 +63,15 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from .hertz_elliptical import hertz_elliptical
 
-__all__ = ["PAIR_ARRANGEMENTS", "BallLoadDistribution", "ball_race_radii", "ball_stiffness",
+__all__ = ["OPPOSED_ARRANGEMENTS", "PAIR_ARRANGEMENTS", "BallLoadDistribution", "ball_race_radii", "ball_stiffness",
            "solve_ball_load_distribution", "solve_ball_pair_load_distribution"]
 
 EXPONENT = 1.5  #: Q = K delta^(3/2), point contact
 RACES = ("inner", "outer")
+#: the pairs whose bearings face each other, clamped so that they can be preloaded
+OPPOSED_ARRANGEMENTS = ("back_to_back", "face_to_face")
 #: how the two bearings of a pair face each other (:func:`solve_ball_pair_load_distribution`)
-PAIR_ARRANGEMENTS = ("back_to_back", "face_to_face", "tandem")
+PAIR_ARRANGEMENTS = (*OPPOSED_ARRANGEMENTS, "tandem")
 
 
 def ball_race_radii(ball_diameter: float, pitch_diameter: float, osculation: float, contact_angle: float,
@@ -336,7 +338,7 @@ def solve_ball_pair_load_distribution(
     if not (row_spacing > 0.0 and math.isfinite(row_spacing)):
         raise InputError(f"ball pair load distribution: row_spacing = {row_spacing!r} m; allowed: finite and > 0 (the "
                          "axial distance between the rows' ball centres)")
-    if not (preload >= 0.0 and math.isfinite(preload)) or (arrangement == "tandem" and preload != 0.0):
+    if not (preload >= 0.0 and math.isfinite(preload)) or (arrangement not in OPPOSED_ARRANGEMENTS and preload != 0.0):
         raise InputError(f"ball pair load distribution: preload = {preload!r} m; allowed: finite and >= 0, and 0 for a "
                          "tandem pair (it is preloaded against a third bearing, which is not modelled)")
     alpha0 = float(free_contact_angle)

@@ -65,6 +65,7 @@ import math
 
 import numpy as np
 
+from ..contact.ball_load_distribution import PAIR_ARRANGEMENTS
 from ..errors import InputError
 
 __all__ = ["ANGULAR_CONTACT_XY", "ANGULAR_LOAD_DEPENDENT", "AXIAL_LOAD_GRID", "DEEP_GROOVE_XY", "FC_TABLE", "PAIR_XY",
@@ -111,8 +112,6 @@ PAIR_XY = {25.0: (0.68, 0.92, 0.67, 1.41), 30.0: (0.80, 0.78, 0.63, 1.24), 35.0:
            40.0: (1.14, 0.55, 0.57, 0.93)}
 #: how a pair's C and C_0 grow over one bearing's: i^0.7 (i = 2 rows, or n = 2 bearings in tandem) and i
 PAIR_RATING_FACTORS = (2.0**0.7, 2.0)
-#: the arrangements whose bearings face each other (rated as one double-row bearing); the third is "tandem"
-_OPPOSED = ("back_to_back", "face_to_face")
 
 
 #: the groove osculations Table 2's f_c holds for (ISO 281 §6.1.1: r_i <= 0.52 D_w, r_e <= 0.53 D_w)
@@ -230,7 +229,7 @@ def pair_load_ratings(C: float, C0: float, fatigue_load_limit: float | None = No
 
 
 def _check_arrangement(arrangement: str, axial_load: float, what: str) -> None:
-    if arrangement not in (*_OPPOSED, "tandem"):
+    if arrangement not in PAIR_ARRANGEMENTS:
         raise InputError(f"{what}: arrangement = {arrangement!r}; allowed: 'back_to_back', 'face_to_face', 'tandem'")
     if arrangement == "tandem" and axial_load < 0.0:
         raise InputError(f"{what}: axial_load = {axial_load:g} N on a tandem pair points away from its contact angle "

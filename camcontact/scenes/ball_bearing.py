@@ -103,7 +103,7 @@ def ball_bearing_inputs(scene: LoadedBallBearing, effects: frozenset) -> dict[st
     inputs: dict[str, Any] = {
         "ball": np.arange(bearing.ball_count * (2 if scene.paired else 1), dtype=float), "bearing": bearing,
         "kind": bearing.kind, "arrangement": scene.arrangement, "preload": scene.si.preload,
-        "row_spacing": b_si.width if scene.row_spacing is None else scene.si.row_spacing,
+        "row_spacing": scene.si.row_spacing,  # None: the bearing's width (BallBearing.pair_load_distribution_si)
         "radial_load": scene.si.radial_load, "axial_load": scene.si.axial_load,
         "moment": None if scene.moment is None else scene.si.moment,
         "n_inner": scene.si.speed / (2 * np.pi), "n_outer": scene.si.outer_speed / (2 * np.pi),
