@@ -31,10 +31,11 @@ def chosen_panels(result, panels, need: dict, what: str) -> list[str]:
 
 
 def polar_loads(ax, azimuth, loads, title: str, label: str | None = None) -> None:
-    """Rolling-element loads [N] over their azimuth [rad] on a polar Axes, closed, in kN, the radial load down
-    (``label``: the trace's, with a legend)."""
-    azimuth = np.asarray(azimuth, dtype=float)
-    kilo = np.asarray(loads, dtype=float) * 1e-3
+    """Rolling-element loads [N] over their azimuth [rad] on a polar Axes, in azimuth order, closed, in kN, the radial
+    load down (``label``: the trace's, with a legend)."""
+    order = np.argsort(np.asarray(azimuth, dtype=float))
+    azimuth = np.asarray(azimuth, dtype=float)[order]
+    kilo = np.asarray(loads, dtype=float)[order] * 1e-3
     ax.plot(np.append(azimuth, azimuth[0] + 2 * np.pi), np.append(kilo, kilo[0]), marker="o", ms=3, label=label)
     ax.set_theta_zero_location("S")  # the radial load points down
     ax.set_title(title, fontsize=10, pad=14)
@@ -49,10 +50,10 @@ def race_panel(ax, row, azimuth, panel: str, element: str, groups=None) -> None:
     every = np.ones(np.size(azimuth), dtype=bool)
     key, scale, label, title = CONTACT_PANELS[panel]
     top = 0.0
-    for mask, suffix in groups or [(every, "")]:
-        degrees = np.degrees(np.angle(np.exp(1j * np.asarray(azimuth, dtype=float)[mask])))
-        order = np.argsort(degrees)
-        for race, style in (("inner", "o"), ("outer", "s")):
+    for race, style in (("inner", "o"), ("outer", "s")):
+        for mask, suffix in groups or [(every, "")]:
+            degrees = np.degrees(np.angle(np.exp(1j * np.asarray(azimuth, dtype=float)[mask])))
+            order = np.argsort(degrees)
             values = np.asarray(row[f"{key}_{race}"], dtype=float)[mask][order] * scale
             top = max(top, float(np.nanmax(values, initial=0.0)))
             ax.plot(degrees[order], values, marker=style, ms=3, label=race + suffix)
@@ -79,37 +80,16 @@ def plot_bearing(result, *, panels=None, figsize=None, ax=None, fig=None, column
     fig, axes = panel_axes(len(chosen), ax=ax, fig=fig, figsize=figsize, columns=columns, where="bearing plot",
                            projections=["polar" if panel == "load" else None for panel in chosen])
     rows = np.asarray(row["roller_row"])
-    azimuth = np.asarray(row["azimuth"])
+    azimuth = np.asarray(row["azimuth"], dtype=float)
+    groups = [(rows == k, f"row {int(k)}") for k in np.unique(rows)]
     for ax, panel in zip(axes, chosen):
         if panel == "load":
-            for k in np.unique(rows):
-                mask = rows == k
-                order = np.argsort(azimuth[mask])
-                angles = np.append(azimuth[mask][order], azimuth[mask][order][0] + 2 * np.pi)
-                loads = np.append(row["Q"][mask][order], row["Q"][mask][order][0]) * 1e-3
-                ax.plot(angles, loads, marker="o", ms=3, label=f"row {int(k)}")
-            ax.set_theta_zero_location("S")  # the radial load points down
-            ax.set_title("roller load Q [kN]", fontsize=10, pad=14)
-            ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
-            continue
-        if panel == "along":
+            for mask, name in groups:
+                polar_loads(ax, azimuth[mask], np.asarray(row["Q"], dtype=float)[mask], "roller load Q [kN]", label=name)
+        elif panel == "along":
             _along_most_loaded(ax, result)
-            continue
-        degrees = np.degrees(np.angle(np.exp(1j * azimuth)))
-        key, scale, label, title = CONTACT_PANELS[panel]
-        top = 0.0
-        for race, style in (("inner", "o"), ("outer", "s")):
-            for k in np.unique(rows):
-                mask = rows == k
-                order = np.argsort(degrees[mask])
-                values = np.asarray(row[f"{key}_{race}"], dtype=float)[mask][order] * scale
-                top = max(top, float(np.nanmax(values, initial=0.0)))
-                ax.plot(degrees[mask][order], values, marker=style, ms=3, label=f"{race}, row {int(k)}")
-        if panel == "lambda":
-            lambda_bands(ax)
-            ax.set_ylim(0.0, max(3.0, 1.1 * top))
-        ax.set(xlabel="azimuth [deg] (0: load line)", ylabel=label, title=title)
-        ax.legend(fontsize=7)
+        else:
+            race_panel(ax, row, azimuth, panel, "contact", groups=[(mask, f", {name}") for mask, name in groups])
     return fig
 
 
