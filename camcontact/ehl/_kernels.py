@@ -11,7 +11,7 @@ reference scaling of :mod:`camcontact.ehl.line_transient` for the transient one)
 .. math::
     L_i = \\frac{\\xi_{i-1/2}(P_{i-1} - P_i) + \\xi_{i+1/2}(P_{i+1} - P_i)}{h^2}
           - |s|\\,\\frac{1.5\\,q_i - 2\\,q_{i-\\sigma} + 0.5\\,q_{i-2\\sigma}}{h}
-          - c_t\\,q_i, \\qquad q = \\bar\\rho H,\\ \\sigma = \\operatorname{sign}(s)
+          - c_t\\,q_i, \\qquad q = \\theta\\bar\\rho H,\\ \\sigma = \\operatorname{sign}(s)
 
 a central Poiseuille term, the wedge scaled by the signed
 entrainment speed ratio s = u_m/u_ref and upwinded in the direction of the flow (second order,
@@ -19,6 +19,14 @@ first order at the first interior node on the inflow side: i = 1 for s > 0, i = 
 s < 0; no wedge at s = 0), plus the implicit part c_t q_i of the time derivative
 (BDF1: c_t = 1/dT, BDF2: c_t = a_0/dT). The history part of the time derivative is known and
 sits in the right-hand side f. The steady operator is the case s = 1, c_t = 0.
+
+theta is the film fraction of the mass-conserving (Jakobsson–Floberg–Olsson) cavitation model in
+the complementarity form of Giacopini et al. (2010): P >= 0, theta <= 1, P (1 - theta) = 0, the
+lubricant content q = theta rho H transported by the wedge and squeeze terms (the Poiseuille flow
+xi dP/dX is that of a full film). theta = 1 at every node is the classical (Reynolds, cavitation by
+clipping) operator; :func:`relax_hybrid` with ``update_theta`` solves for theta where P = 0. The
+boundary node upstream (X_a for s > 0, X_b for s < 0) holds the supply: its content is the inlet
+layer (starvation) or a full film.
 
 Importing this module imports numba but compiles nothing.
 """
@@ -232,11 +240,23 @@ def density_ratio(P, density_code, params):
 
 
 @register_jitable
-def wedge_weight(i, k, n, s):
+def full_film(j, P, rho):
+    """True where node j carries a full film: pressurised, or theta = 1 (``rho`` = theta times the density
+    ratio, which is 1 at P = 0)."""
+    return P[j] > 0.0 or rho[j] >= 1.0
+
+
+@register_jitable
+def wedge_weight(i, k, n, s, P, rho):
     """(weight, node) of term k = 0, 1, 2 of the upwind wedge stencil at node i for speed ratio s.
 
-    Weights 1.5, -2, 0.5 on nodes i, i - sigma, i - 2 sigma; first order (1, -1) when the second
-    upstream node is outside the grid; (0, i) for an unused term or s = 0.
+    The wedge is the difference G_i - G_(i-sigma) of the upwind fluxes G_j = q_j + phi_j (q_j - q_(j-sigma))/2,
+    second order (phi_j = 1) between two full-film nodes (:func:`full_film`), first order (phi_j = 0) where
+    either of them is partly filled (a cavitated or starved region and its edges: second-order upwinding
+    across the jump of theta at a reformation front overshoots, and the front does not converge). With a
+    full film throughout, the weights are 1.5, -2, 0.5 on nodes i, i - sigma, i - 2 sigma. First order
+    (1, -1) when the second upstream node is outside the grid; (0, i) for an unused term or s = 0. The
+    limiter keeps the scheme conservative (:attr:`camcontact.ehl.line_solution.LineEHLSolution.mass_flux`).
     """
     if s == 0.0:
         return 0.0, i
@@ -248,11 +268,14 @@ def wedge_weight(i, k, n, s):
         if k == 1:
             return -1.0, i - sigma
         return 0.0, i
+    up = i - sigma
+    phi_i = 1.0 if full_film(i, P, rho) and full_film(up, P, rho) else 0.0
+    phi_up = 1.0 if full_film(up, P, rho) and full_film(up - sigma, P, rho) else 0.0
     if k == 0:
-        return 1.5, i
+        return 1.0 + 0.5 * phi_i, i
     if k == 1:
-        return -2.0, i - sigma
-    return 0.5, i - 2 * sigma
+        return -1.0 - 0.5 * (phi_i + phi_up), up
+    return 0.5 * phi_up, up - sigma
 
 
 @register_jitable
@@ -289,7 +312,7 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
         d_im1 -= weight * dxi_dh * inv_pi * K[abs(m - i + 1)]
     # wedge and squeeze: -sum_k c_k d(rho_m H_m), c_k = |s| w_k / h (+ c_t at m = i)
     for k in range(3):
-        weight, m = wedge_weight(i, k, n, s)
+        weight, m = wedge_weight(i, k, n, s, P, rho)
         coefficient = abs(s) * weight / h
         if k == 0:
             coefficient += c_t
@@ -306,11 +329,12 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
 
 # ----------------------------------------------------------------------------- EHL operator
 @register_jitable
-def nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi):
-    """Fill rho (density ratio) and xi = rho H^3 / (eta lambda) at every node."""
+def nodal_coefficients(P, H, theta, lam, viscosity_code, density_code, params, rho, xi):
+    """Fill rho (theta times the density ratio: the content factor of the wedge) and xi = rho_law H^3 /
+    (eta lambda) (a full film's) at every node."""
     for i in range(P.shape[0]):
         r = density_ratio(P[i], density_code, params)
-        rho[i] = r
+        rho[i] = r * theta[i]
         hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
         xi[i] = r * hi * hi * hi * math.exp(-log_viscosity(P[i], viscosity_code, params)) / lam
 
@@ -339,22 +363,22 @@ def law_state(p, viscosity_code, density_code, params):
 
 
 @register_jitable
-def nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, drh):
-    """:func:`nodal_coefficients` plus d ln(xi)/dP and d rho/dP, sharing one log1p and exp per node."""
+def nodal_laws(P, H, theta, lam, viscosity_code, density_code, params, rho, xi, dlx, drh):
+    """:func:`nodal_coefficients` plus d ln(xi)/dP and d (theta rho)/dP, sharing one log1p and exp per node."""
     for i in range(P.shape[0]):
         p = P[i]
         hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
         if p <= 0.0:
-            rho[i] = 1.0
+            rho[i] = theta[i]
             xi[i] = hi * hi * hi / lam
             dlx[i] = 0.0
             drh[i] = 0.0
             continue
         r, d_r, log_eta, dlog_eta = law_state(p, viscosity_code, density_code, params)
-        rho[i] = r
+        rho[i] = r * theta[i]
         xi[i] = r * hi * hi * hi * math.exp(-log_eta) / lam
         dlx[i] = d_r / r - dlog_eta
-        drh[i] = d_r
+        drh[i] = d_r * theta[i]
 
 
 @register_jitable
@@ -366,19 +390,19 @@ def operator_at(i, P, H, rho, xi, h, s, c_t):
     poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
     wedge = 0.0
     for k in range(3):
-        weight, m = wedge_weight(i, k, n, s)
+        weight, m = wedge_weight(i, k, n, s, P, rho)
         if weight != 0.0:
             wedge += weight * rho[m] * H[m]
     return poiseuille - abs(s) * wedge / h - c_t * rho[i] * H[i]
 
 
 @register_jitable
-def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, s, c_t, out):
-    """out_i = L_i(P, H) at interior nodes; boundary entries 0."""
+def reynolds_residual(P, H, theta, h, lam, viscosity_code, density_code, params, s, c_t, out):
+    """out_i = L_i(P, H, theta) at interior nodes; boundary entries 0."""
     n = P.shape[0]
     rho = np.empty(n)
     xi = np.empty(n)
-    nodal_coefficients(P, H, lam, viscosity_code, density_code, params, rho, xi)
+    nodal_coefficients(P, H, theta, lam, viscosity_code, density_code, params, rho, xi)
     out[0] = 0.0
     out[n - 1] = 0.0
     for i in range(1, n - 1):
@@ -386,9 +410,10 @@ def reynolds_residual(P, H, h, lam, viscosity_code, density_code, params, s, c_t
 
 
 @register_jitable
-def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
-                 window, first, last, dry, s, c_t):
-    """One hybrid Gauss–Seidel / Jacobi-distributive sweep for L(P) = f, in place on P and H.
+def relax_hybrid(P, H, theta, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
+                 window, first, last, dry, s, c_t, update_theta, supply):
+    """One hybrid Gauss–Seidel / Jacobi-distributive sweep for L(P, theta) = f, in place on P and H
+    (and theta with ``update_theta``).
 
     The regime of each node is fixed from the state at the start of the sweep: Gauss–Seidel
     where (xi_{i-1/2} + xi_{i+1/2})/h^2 >= switch * |d (wedge_i + squeeze_i) / d P_i| through the
@@ -406,13 +431,27 @@ def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega
     Negative pressures are set to zero (cavitation). K holds K(d) for d = 0..window+3.
     Only nodes first..last (clipped to the interior) are relaxed; nodes with ``dry`` set are
     held at P = 0 (a frozen cavitation set). Returns the number of distributive nodes.
+
+    Mass-conserving cavitation (``update_theta``; Elrod 1981's switch between the pressure and the
+    film fraction as the unknown, in the complementarity form of Giacopini et al. 2010): the
+    upstream boundary node first takes the film fraction of the supply, theta = min(1, supply / H)
+    (``supply`` the inlet layer's content h_oil R/b^2; infinite: flooded). At a Gauss–Seidel node
+    with P = 0, L_i = f_i is solved for its content q_i = theta_i H_i (rho = 1 at P = 0), the
+    other nodes as they are: theta_i = (L_i(q_i = 0) - f_i)/(c H_i), c = dL_i/dq_i = |s| w_0/h + c_t
+    with the first-order weight w_0 of a partly filled node.
+    theta_i < 1 keeps the node cavitated with that film fraction (clipped at 0); otherwise theta_i = 1
+    and the node takes pressure by the Gauss–Seidel step. Nodes pressurised after the sweep have
+    theta = 1. Frozen ``dry`` nodes keep P = 0 and take the film fraction (clipped at 1). Without ``update_theta`` theta is a given coefficient (the coarse grids' injected one).
     """
     n = P.shape[0]
+    if update_theta and s != 0.0:
+        b = 0 if s > 0.0 else n - 1
+        theta[b] = 1.0 if not (H[b] > supply) else supply / H[b]
     rho = np.empty(n)
     xi = np.empty(n)
     dlx = np.empty(n)
     drh = np.empty(n)
-    nodal_laws(P, H, lam, viscosity_code, density_code, params, rho, xi, dlx, drh)
+    nodal_laws(P, H, theta, lam, viscosity_code, density_code, params, rho, xi, dlx, drh)
     delta = np.zeros(n)
     jacobi = np.zeros(n, dtype=np.bool_)
     count = 0
@@ -424,13 +463,30 @@ def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega
         coefficient = 0.5 * (xi[i - 1] + 2.0 * xi[i] + xi[i + 1]) / (h * h)
         d_integral = c_t * rho[i] * K[0]
         for k in range(3):
-            weight, m = wedge_weight(i, k, n, s)
+            weight, m = wedge_weight(i, k, n, s, P, rho)
             if weight != 0.0:
                 d_integral += abs(s) * weight * rho[m] * K[abs(m - i)] / h
         jacobi[i] = coefficient < switch * abs(inv_pi * d_integral)
+        if update_theta and P[i] <= 0.0:  # cavitated nodes solve for their film fraction (below)
+            jacobi[i] = False
     for i in range(first, last + 1):
-        if dry[i]:
+        if dry[i] and not update_theta:
             continue
+        if update_theta and P[i] <= 0.0:  # a cavitated node: its film fraction first
+            rho[i] = 0.0  # solved as a partly filled node (first-order wedge flux, see wedge_weight)
+            weight, _ = wedge_weight(i, 0, n, s, P, rho)
+            own = abs(s) * weight / h + c_t
+            if own > 0.0 and H[i] > 0.0:
+                rest = operator_at(i, P, H, rho, xi, h, s, c_t)  # L_i without its own content
+                fraction = (rest - f[i]) / (own * H[i])
+                if fraction < 1.0 or dry[i]:
+                    theta[i] = min(max(fraction, 0.0), 1.0)
+                    rho[i] = theta[i]
+                    continue
+            theta[i] = 1.0
+            rho[i] = 1.0
+            if dry[i]:
+                continue
         r = f[i] - operator_at(i, P, H, rho, xi, h, s, c_t)
         diagonal, off_diagonal = local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t)
         if not jacobi[i]:
@@ -448,7 +504,7 @@ def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega
                     H[m] -= inv_pi * K[abs(m - i)] * change
                 for m in range(max(low, i - 1), min(high, i + 1) + 1):
                     r_m = density_ratio(P[m], density_code, params)
-                    rho[m] = r_m
+                    rho[m] = r_m * theta[m]
                     hm = max(H[m], 0.0)
                     xi[m] = r_m * hm * hm * hm * math.exp(-log_viscosity(P[m], viscosity_code, params)) / lam
         elif jacobi[i - 1]:
@@ -468,6 +524,8 @@ def relax_hybrid(P, H, f, h, lam, viscosity_code, density_code, params, K, omega
     for i in range(max(first - 1, 1), last + 1):
         if P[i] < 0.0 or dry[i]:
             P[i] = 0.0
+        elif update_theta and P[i] > 0.0:
+            theta[i] = 1.0
     return count
 
 

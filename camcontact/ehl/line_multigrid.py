@@ -35,6 +35,19 @@ the discrete problem of :mod:`camcontact.ehl.line_operator`:
   film its discrete film can close (H <= 0); xi is then 0 (a closed gap passes no pressure flow), not negative,
   which keeps heavy-load, low-L cases (M = 1000, L = 2) convergent.
 
+Mass-conserving cavitation (``LineEHLProblem(cavitation="mass_conserving")``, Jakobsson–Floberg–Olsson through
+the film fraction theta, Elrod 1981, in the complementarity form of Giacopini et al. 2010): every level's
+sweeps solve for theta where P = 0 (:func:`camcontact.ehl._kernels.relax_hybrid`), the wedge flux is first
+order next to partly filled nodes; the solution carries theta (``film_fraction``) and its discrete mass flux
+(``mass_flux``). A flooded steady contact gives the film of the Reynolds condition (to 1e-9 at M = 20, L = 10)
+with the flux constant to 2e-8 through the cavitated outlet. Measured on level 8 (tolerance 1e-8) over
+M in {2, 5, 20, 100, 1000} x L in {0, 2, 5, 10, 20}: 21 of 25 converge (the Reynolds model: all 25); M = 5,
+L = 20, M = 100, L = 0 and M = 1000, L = 5 and 10 stagnate (warning; films within 0.04-0.6 % of the
+Reynolds model's). The stop rule watches the films, not the flux: at tolerance 1e-8 the converged solves'
+flux is constant to 5e-6-2e-2 (at 1e-9 on level 7, M = 20, L = 10: 2e-8), the spread sitting at the rupture.
+Starved inlets (a supply layer) are not offered yet: from a flooded start, the meniscus of a starved
+solve moves by relaxation alone, about one node per 2-8 cycles.
+
 Every solve returns a :class:`~camcontact.ehl.line_solution.ConvergenceRecord` (residual and
 load error per cycle, work units, wall time, converged flag, notes). Not converged: a
 :class:`~camcontact.errors.ConvergenceWarning`, or :class:`~camcontact.errors.ConvergenceError`
@@ -122,6 +135,11 @@ class LineHierarchy:
         #: signed entrainment speed ratio and implicit squeeze coefficient of the operator (steady: 1, 0;
         #: see :mod:`camcontact.ehl._kernels`)
         self.s, self.c_t = 1.0, 0.0
+        #: mass-conserving cavitation (film fractions solved where P = 0) and the inlet layer's content
+        #: h_oil R/b^2 the kernels take at the upstream boundary (infinite: a flooded inlet, the only one the
+        #: solvers offer so far)
+        self.mass_conserving = problem.cavitation == "mass_conserving"
+        self.supply = math.inf
         self.work = 0.0
         #: frozen cavitation sets per level number (set when the cycles start to alternate)
         self.dry: dict[int, np.ndarray] = {}
@@ -157,6 +175,9 @@ class LineHierarchy:
         total = int(self.n_of.sum())
         self.P_all, self.P_old, self.f_all = np.zeros(total), np.zeros(total), np.zeros(total)
         self.dry_all = np.zeros(total, dtype=np.bool_)
+        #: film fractions per level (1: full film); the cycles solve for them on their top level when the
+        #: problem's cavitation is mass-conserving
+        self.theta_all = np.ones(total)
         self.H0s, self.loads = np.zeros(len(levels)), np.zeros(len(levels))
         self.real_settings = np.array([s.omega_gs, s.omega_jacobi, s.switch, s.h0_relaxation])
         self.int_settings = np.array([s.pre_sweeps, s.post_sweeps, s.coarsest_sweeps, s.window,
@@ -170,20 +191,27 @@ class LineHierarchy:
             return H0 + level.parabola
         return H0 + level.parabola - level.deform(P) / math.pi
 
+    def theta(self, level: _Level) -> np.ndarray:
+        """The film fractions of ``level`` (a view into the cycles' buffer; 1 where the film is full)."""
+        index = level.k - 1
+        o = int(self.offsets[index])
+        return self.theta_all[o:o + level.n]
+
     def residual(self, level: _Level, P: np.ndarray, H: np.ndarray) -> np.ndarray:
-        """Reynolds operator L_i(P, H) [-] at the interior nodes of ``level`` (boundary entries 0)."""
+        """Reynolds operator L_i(P, H, theta) [-] at the interior nodes of ``level`` (boundary entries 0)."""
         out = np.empty(level.n)
-        self.kernel("reynolds_residual")(P, H, level.h, self.lam, self.viscosity_code, self.density_code,
-                                         self.params, self.s, self.c_t, out)
+        self.kernel("reynolds_residual")(P, H, self.theta(level), level.h, self.lam, self.viscosity_code,
+                                         self.density_code, self.params, self.s, self.c_t, out)
         return out
 
     def load(self, level: _Level, P: np.ndarray) -> float:
         """Load-balance error [-]: trapezoidal integral of P dX minus pi/2."""
         return float(level.h * (P.sum() - 0.5 * (P[0] + P[-1])) - 0.5 * math.pi)
 
-    def freeze_dry(self, P: np.ndarray) -> None:
-        """Hold the currently cavitated nodes of the finest grid (and their injections) at P = 0."""
-        dry = P <= 0.0
+    def freeze_dry(self, P: np.ndarray, dry: np.ndarray | None = None) -> None:
+        """Hold the currently cavitated nodes of the finest grid (or the finest-grid nodes ``dry``), and their
+        injections, at P = 0."""
+        dry = P <= 0.0 if dry is None else dry
         for index in range(len(self.levels) - 1, -1, -1):
             level = self.levels[index]
             self.dry[level.k] = dry.copy()
@@ -221,10 +249,11 @@ class LineHierarchy:
         self.f_all[o:o + n] = f
         self.H0s[k], self.loads[k] = H0, f_load
         self.work += self.cycle_kernel(
-            schedule, self.P_all, self.P_old, self.f_all, self.H0s, self.loads, self.dry_all, self.n_of,
-            self.offsets, self.h_of, self.parabola, self.K_local, self.mlmi_on, self.m_of, self.c1s, self.c2s,
-            _kernels.INTERP6, DIRECT_BELOW, self.K_dense, self.lam, self.viscosity_code, self.density_code,
+            schedule, self.P_all, self.P_old, self.f_all, self.H0s, self.loads, self.dry_all, self.theta_all,
+            self.n_of, self.offsets, self.h_of, self.parabola, self.K_local, self.mlmi_on, self.m_of, self.c1s,
+            self.c2s, _kernels.INTERP6, DIRECT_BELOW, self.K_dense, self.lam, self.viscosity_code, self.density_code,
             self.params, self.problem.elastic, self.real_settings, self.int_settings, self.s, self.c_t,
+            self.mass_conserving, self.supply,
         )
         return self.P_all[o:o + n].copy(), float(self.H0s[k])
 
@@ -291,6 +320,8 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
         P = np.maximum(np.interp(finest.X, initial.X, initial.P), 0.0)
         P[0] = P[-1] = 0.0
         H0 = float(initial.H0)
+        if solver.mass_conserving:
+            solver.theta(finest)[:] = np.interp(finest.X, initial.X, initial.film_fraction)
     else:  # full multigrid start: exact solve on the start level, then up level by level
         first, coarse = _start(problem, min(settings.start_level, len(solver.levels)), len(solver.levels))
         P, H0 = coarse.P.copy(), coarse.H0
@@ -298,6 +329,10 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
         for k in range(first, len(solver.levels)):
             P = np.maximum(solver.prolong_cubic(P), 0.0)
             P[0] = P[-1] = 0.0
+            if solver.mass_conserving:  # the film fractions found on the level below
+                below = solver.theta(solver.levels[k - 1])
+                solver.theta(solver.levels[k])[:] = np.minimum(np.interp(solver.levels[k].X, solver.levels[k - 1].X,
+                                                                         below), 1.0)
             zero = np.zeros(solver.levels[k].n)
             for _ in range(settings.fmg_cycles):
                 P, H0 = solver.cycle(k, P, H0, zero, 0.0)
@@ -313,7 +348,7 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
                         tolerance),
             )
         r = solver.residual(finest, P, H)
-        r = np.where(P > 0.0, r, np.maximum(r, 0.0))
+        r = np.where((P > 0.0) | (solver.theta(finest) < 1.0), r, np.maximum(r, 0.0))
         if watch.after_cycle(P, (float(H.min()), H0), float(np.mean(np.abs(r[1:-1])) * finest.h),
                              solver.load(finest, P), solver.work):
             break
@@ -327,8 +362,9 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
         message += f"; {int(wants.sum())} frozen dry nodes would take pressure" if wants.any() else "; complementarity holds"
     H = solver.film(finest, P, H0)
     record = _record(solver, residuals, loads, works, start, converged, message, tolerance)
+    theta = solver.theta(finest).copy() if solver.mass_conserving else None
     return LineEHLSolution(problem=problem, level=int(levels), X=finest.X, P=P, H=H, H0=float(H0), record=record,
-                           settings=settings)
+                           settings=settings, theta=theta)
 
 
 _MAX_START_LEVEL = 6  # the dense start solver stays below ~1 s

@@ -33,9 +33,11 @@ import numpy as np
 
 from ..errors import InputError
 
-__all__ = ["LineEHLProblem", "grid_points", "kernel_coefficients", "roelands_alpha"]
+__all__ = ["CAVITATION_MODELS", "LineEHLProblem", "grid_points", "kernel_coefficients", "roelands_alpha"]
 
 ROELANDS_P0 = 1.96e8
+#: cavitation models of the line problems: clipping with the Reynolds exit condition, or mass-conserving (JFO)
+CAVITATION_MODELS = ("reynolds", "mass_conserving")
 DH_A, DH_B = 5.9e8, 1.34
 
 
@@ -100,6 +102,14 @@ class LineEHLProblem:
         False for rigid surfaces (no deformation term).
     domain : (float, float)
         (X_a, X_b) in units of the Hertz half-width b.
+    cavitation : str
+        ``"reynolds"`` (default): cavitation by clipping, P >= 0 with the Reynolds (Swift–Stieber) exit
+        condition and a full film everywhere; ``"mass_conserving"``: the Jakobsson–Floberg–Olsson model
+        through the film fraction theta (Elrod 1981; complementarity form of Giacopini et al. 2010),
+        which conserves the lubricant through cavitated and starved regions. Steady and flooded, both
+        give the same pressure (JFO rupture is the Reynolds condition in a steady line contact); the
+        mass-conserving one also gives the film fraction of the cavitated outlet and conserves the
+        lubricant there (:attr:`~camcontact.ehl.line_solution.LineEHLSolution.mass_flux`).
     """
 
     M: float
@@ -112,6 +122,7 @@ class LineEHLProblem:
     elastic: bool = True
     domain: tuple = (-4.0, 1.5)
     pressure_scale: float | None = None
+    cavitation: str = "reynolds"
 
     def __attrs_post_init__(self):
         if not (self.M > 0 and math.isfinite(self.M)):
@@ -132,6 +143,8 @@ class LineEHLProblem:
             )
         if self.pressure_scale is not None and not self.pressure_scale > 0:
             raise InputError(f"LineEHLProblem.pressure_scale = {self.pressure_scale!r} must be > 0")
+        if self.cavitation not in CAVITATION_MODELS:
+            raise InputError(f"LineEHLProblem.cavitation = {self.cavitation!r}; allowed: {', '.join(CAVITATION_MODELS)}")
         xa, xb = self.domain
         if not (xa < -1.0 and xb > 1.0):
             raise InputError(f"LineEHLProblem.domain = {self.domain!r} must contain the Hertz contact [-1, 1]")

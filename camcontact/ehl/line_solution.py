@@ -73,6 +73,39 @@ class LineEHLSolution:
     record: ConvergenceRecord
     #: the solver settings that produced the solution (multigrid: the attempt that was kept)
     settings: object = attrs.field(default=None, eq=False)
+    #: film fraction per node of a mass-conserving solve (None: a full film, the Reynolds cavitation model)
+    theta: np.ndarray | None = attrs.field(default=None, repr=False, eq=False)
+
+    @property
+    def film_fraction(self) -> np.ndarray:
+        """theta [-] per node: the fraction of the gap filled with lubricant (1 where P > 0; all 1 unless
+        the problem's cavitation is mass-conserving)."""
+        return np.ones_like(self.P) if self.theta is None else self.theta
+
+    @property
+    def content(self) -> np.ndarray:
+        """Lubricant content q = theta rho H per node [-] (mass per area in units of rho_0 b^2/R)."""
+        return self.film_fraction * self.problem.density_ratio(self.P) * self.H
+
+    @property
+    def mass_flux(self) -> np.ndarray:
+        """Discrete mass flux F = q - xi dP/dX [-] through the n - 1 cell faces, in units of rho_0 u_m b^2/R,
+        in the conservative form of the solver's operator: F_(i+1/2) = G_i - xi_(i+1/2) (P_(i+1) - P_i)/h with
+        the limited upwind wedge flux G_i = q_i + phi_i (q_i - q_(i-1))/2, phi_i = 1 between full-film nodes
+        and 0 elsewhere (:func:`camcontact.ehl._kernels.wedge_weight`; G_0 = q_0 + phi_1 (q_1 - q_0)/2 for the
+        first-order first node),
+        so that F_(i+1/2) - F_(i-1/2) = -h L_i: constant where the discrete Reynolds equation holds,
+        through pressurised and cavitated nodes alike (mass conservation). Steady operator (s = 1)."""
+        problem, P, H = self.problem, self.P, self.H
+        h = float(self.X[1] - self.X[0])
+        q = self.content
+        xi = problem.density_ratio(P) * np.maximum(H, 0.0) ** 3 * np.exp(-problem.log_viscosity(P)) / problem.lam
+        full = (P > 0.0) | (self.film_fraction >= 1.0)
+        phi = np.where(full[1:-1] & full[:-2], 0.5, 0.0)  # limiter of faces 1..n-2 (kernels' wedge_weight)
+        G = np.empty(P.size - 1)
+        G[1:] = q[1:-1] + phi * (q[1:-1] - q[:-2])
+        G[0] = q[0] + phi[0] * (q[1] - q[0])
+        return G - 0.5 * (xi[:-1] + xi[1:]) * np.diff(P) / h
 
     @property
     def H_min(self) -> float:
