@@ -435,13 +435,15 @@ def relax_hybrid(P, H, theta, f, h, lam, viscosity_code, density_code, params, K
     Mass-conserving cavitation (``update_theta``; Elrod 1981's switch between the pressure and the
     film fraction as the unknown, in the complementarity form of Giacopini et al. 2010): the
     upstream boundary node first takes the film fraction of the supply, theta = min(1, supply / H)
-    (``supply`` the inlet layer's content h_oil R/b^2; infinite: flooded). At a Gauss–Seidel node
-    with P = 0, L_i = f_i is solved for its content q_i = theta_i H_i (rho = 1 at P = 0), the
-    other nodes as they are: theta_i = (L_i(q_i = 0) - f_i)/(c H_i), c = dL_i/dq_i = |s| w_0/h + c_t
-    with the first-order weight w_0 of a partly filled node.
+    (``supply`` the inlet layer's content h_oil R/b^2; infinite: flooded). Every node with P = 0 is
+    relaxed point-wise (whatever its regime): L_i = f_i is solved for its content q_i = theta_i H_i
+    (rho = 1 at P = 0), the other nodes as they are: theta_i = (L_i(q_i = 0) - f_i)/(c H_i),
+    c = dL_i/dq_i = |s| w_0/h + c_t with the first-order weight w_0 of a partly filled node.
     theta_i < 1 keeps the node cavitated with that film fraction (clipped at 0); otherwise theta_i = 1
     and the node takes pressure by the Gauss–Seidel step. Nodes pressurised after the sweep have
-    theta = 1. Frozen ``dry`` nodes keep P = 0 and take the film fraction (clipped at 1). Without ``update_theta`` theta is a given coefficient (the coarse grids' injected one).
+    theta = 1. Frozen ``dry`` nodes keep P = 0 and take the film fraction (clipped at 1). The sweep runs
+    from ``first`` to ``last`` whatever the sign of s, so the content marches downstream in one sweep
+    only for s > 0. Without ``update_theta``, theta is a given coefficient.
     """
     n = P.shape[0]
     if update_theta and s != 0.0:
