@@ -114,7 +114,7 @@ def fischer_burmeister(a, b):
 
 
 @register_jitable
-def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, h, lam, viscosity_code, density_code, params,
+def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, pinned, h, lam, viscosity_code, density_code, params,
                   elastic, s, c_t, tolerance, max_iterations):
     """Semi-smooth Newton for the complementarity problem L(P, H0) = f, load = f_load on a small grid
     (film fractions theta given: the injected ones of a mass-conserving solve, else 1).
@@ -224,7 +224,10 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, h, lam, viscosit
         for k in range(m):
             i = k + 1
             scale[i] = 1.0 / max(abs(J[i, i]), 1e-300)
-            phi[k], da[k], db[k] = fischer_burmeister(P[i], -scale[i] * L[i])
+            if pinned[i]:  # held at P = 0: the equation P_i = 0
+                phi[k], da[k], db[k] = P[i], 1.0, 0.0
+            else:
+                phi[k], da[k], db[k] = fischer_burmeister(P[i], -scale[i] * L[i])
             residual = max(residual, abs(phi[k]))
             merit += phi[k] * phi[k]
         load = h * (P.sum() - 0.5 * (P[0] + P[n - 1])) - 0.5 * math.pi - f_load
@@ -262,7 +265,10 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, h, lam, viscosit
                         elastic, s, c_t, H_new, L_new)
             trial = 0.0
             for k in range(m):
-                value, _, _ = fischer_burmeister(P_new[k + 1], -scale[k + 1] * L_new[k + 1])
+                if pinned[k + 1]:
+                    value = P_new[k + 1]
+                else:
+                    value, _, _ = fischer_burmeister(P_new[k + 1], -scale[k + 1] * L_new[k + 1])
                 trial += value * value
             load_new = h * (P_new.sum() - 0.5 * (P_new[0] + P_new[n - 1])) - 0.5 * math.pi - f_load
             trial += load_new * load_new
@@ -340,6 +346,10 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
     freeze_boundary = int_settings[5] != 0
     dry_own = int_settings[6] != 0
     n_finest = n_of[n_of.shape[0] - 1]
+    top = schedule[0, 1]
+    # the nodes each level holds at P = 0: the frozen set, and (mass-conserving) on the coarse levels every node
+    # injected from a cavitated fine node (projected FAS: the coarse grids correct the pressurised region only)
+    pin_all = dry_all.copy()
     zero_K = np.zeros(K_local.shape[1])
     work = 0.0
     for step in range(schedule.shape[0]):
@@ -350,9 +360,9 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
         h = h_of[k]
         P = P_all[o:o + n]
         f = f_all[o:o + n]
-        dry = dry_all[o:o + n]
         theta = theta_all[o:o + n]
-        update_theta = mass_conserving
+        update_theta = mass_conserving and k == top
+        dry = pin_all[o:o + n] if mass_conserving and k != top else dry_all[o:o + n]
         K = K_local[k] if elastic else zero_K
         sweeps = pre if op == DOWN else (post if op == UP else 0)
         if op == UP:  # coarse-grid correction from level k - 1 first, then the post-sweeps
@@ -381,7 +391,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
             work += (n - 2) / n_finest
         if op == SOLVE:
             P_new, H0_new, iterations, status = coarse_newton(
-                P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], theta, h, lam, viscosity_code,
+                P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], theta, dry, h, lam, viscosity_code,
                 density_code, params, elastic, s, c_t, 1e-11, 60)
             work += iterations * n / n_finest
             if status == 0:
@@ -415,6 +425,8 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
                 Pc[j] = P[2 * j]
                 P_old[oc + j] = P[2 * j]
                 theta_all[oc + j] = theta[2 * j]
+                if mass_conserving:
+                    pin_all[oc + j] = dry_all[oc + j] or not P[2 * j] > 0.0
             theta_c = theta_all[oc:oc + nc]
             Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                             direct_below, elastic)

@@ -35,18 +35,18 @@ the discrete problem of :mod:`camcontact.ehl.line_operator`:
   film its discrete film can close (H <= 0); xi is then 0 (a closed gap passes no pressure flow), not negative,
   which keeps heavy-load, low-L cases (M = 1000, L = 2) convergent.
 
-Mass-conserving cavitation (``LineEHLProblem(cavitation="mass_conserving")``, Jakobsson–Floberg–Olsson through
-the film fraction theta, Elrod 1981, in the complementarity form of Giacopini et al. 2010): every level's
-sweeps solve for theta where P = 0 (:func:`camcontact.ehl._kernels.relax_hybrid`), the wedge flux is first
-order next to partly filled nodes; the solution carries theta (``film_fraction``) and its discrete mass flux
-(``mass_flux``). A flooded steady contact gives the film of the Reynolds condition (to 1e-9 at M = 20, L = 10)
-with the flux constant to 2e-8 through the cavitated outlet. Measured on level 8 (tolerance 1e-8) over
-M in {2, 5, 20, 100, 1000} x L in {0, 2, 5, 10, 20}: 21 of 25 converge (the Reynolds model: all 25); M = 5,
-L = 20, M = 100, L = 0 and M = 1000, L = 5 and 10 stagnate (warning; films within 0.04-0.6 % of the
-Reynolds model's). The stop rule watches the films, not the flux: at tolerance 1e-8 the converged solves'
-flux is constant to 5e-6-2e-2 (at 1e-9 on level 7, M = 20, L = 10: 2e-8), the spread sitting at the rupture.
-Starved inlets (a supply layer) are not offered yet: from a flooded start, the meniscus of a starved
-solve moves by relaxation alone, about one node per 2-8 cycles.
+Mass-conserving cavitation (``LineEHLProblem(cavitation="mass_conserving")``: Jakobsson–Floberg–Olsson through
+the film fraction theta, Elrod 1981, in the complementarity form of Giacopini et al. 2010). The sweeps of the
+finest grid solve for theta where P = 0 (:func:`camcontact.ehl._kernels.relax_hybrid`); the coarse grids take
+theta by injection and hold every node injected from a cavitated fine node at P = 0 (projected FAS: they
+correct the pressurised region only; measured: letting them pressurise those nodes left M = 1000, L = 10
+stagnating). The wedge flux is first order behind a partly filled node. The solution carries theta
+(``film_fraction``) and its discrete mass flux (``mass_flux``). Measured on level 8 at tolerance 1e-10 over
+M in {2, 5, 20, 100, 1000} x L in {0, 2, 5, 10, 20}: 24 of 25 converge (M = 5, L = 20 stagnates, as it takes the
+Reynolds model 27 cycles); their films equal the Reynolds model's within 5e-7 (JFO rupture is the Reynolds
+condition in a steady line contact) and the mass flux is constant through contact and cavitated exit to
+3e-8 ... 8e-5 (3e-4 at M = 1000, L = 0). A starved inlet (``supply``) is solved by
+:func:`camcontact.ehl.line_starved.solve_starved`.
 
 Every solve returns a :class:`~camcontact.ehl.line_solution.ConvergenceRecord` (residual and
 load error per cycle, work units, wall time, converged flag, notes). Not converged: a
@@ -70,7 +70,7 @@ from .deformation import DIRECT_BELOW, Deformation
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
 from .line_solution import ConvergenceRecord, LineEHLSolution
 
-__all__ = ["MONITOR_RULES", "LineHierarchy", "MultigridSettings", "solve_multigrid"]
+__all__ = ["MONITOR_RULES", "LineHierarchy", "MultigridSettings", "converge_finest", "solve_multigrid"]
 
 
 @attrs.frozen
@@ -136,8 +136,8 @@ class LineHierarchy:
         #: see :mod:`camcontact.ehl._kernels`)
         self.s, self.c_t = 1.0, 0.0
         #: mass-conserving cavitation (film fractions solved where P = 0) and the inlet layer's content
-        #: h_oil R/b^2 the kernels take at the upstream boundary (infinite: a flooded inlet, the only one the
-        #: solvers offer so far)
+        #: h_oil R/b^2 the kernels take at the upstream boundary (infinite: a flooded inlet; a starved steady
+        #: contact is solved by :func:`camcontact.ehl.line_starved.solve_starved`)
         self.mass_conserving = problem.cavitation == "mass_conserving"
         self.supply = math.inf
         self.work = 0.0
@@ -302,6 +302,9 @@ def solve_multigrid(
     """
     if not (isinstance(levels, (int, np.integer)) and 1 <= levels <= 16):
         raise InputError(f"solve_multigrid: levels = {levels!r}; allowed 1..16")
+    if problem.supply is not None:
+        raise InputError(f"solve_multigrid: the problem has a starved inlet (supply = {problem.supply!r}); solve it "
+                         "with camcontact.ehl.line_starved.solve_starved, which finds its meniscus")
     settings = settings or MultigridSettings()
     return run_ladder(settings, ROBUST, lambda attempt: _solve_once(problem, levels, tolerance, attempt, initial, compiled),
                       f"line EHL multigrid (M = {problem.M:.4g}, L = {problem.L:.4g})", strict=strict,
@@ -336,6 +339,16 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
             zero = np.zeros(solver.levels[k].n)
             for _ in range(settings.fmg_cycles):
                 P, H0 = solver.cycle(k, P, H0, zero, 0.0)
+    return converge_finest(solver, P, H0, tolerance, start)
+
+
+def converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance: float | None,
+                    start: float) -> LineEHLSolution:
+    """Cycles on the finest grid of ``solver`` from (P, H0) until :data:`MONITOR_RULES` stop them; the
+    solution with its record (wall time counted from ``start``, a :func:`time.perf_counter` value).
+    Raises ConvergenceError on a non-finite state."""
+    problem, settings, levels = solver.problem, solver.settings, len(solver.levels)
+    finest = solver.levels[-1]
     zero = np.zeros(finest.n)
     watch = CycleMonitor(MONITOR_RULES, tolerance, solver.freeze_dry)
     for _ in range(settings.max_cycles):

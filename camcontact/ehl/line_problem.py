@@ -108,8 +108,14 @@ class LineEHLProblem:
         through the film fraction theta (Elrod 1981; complementarity form of Giacopini et al. 2010),
         which conserves the lubricant through cavitated and starved regions. Steady and flooded, both
         give the same pressure (JFO rupture is the Reynolds condition in a steady line contact); the
-        mass-conserving one also gives the film fraction of the cavitated outlet and conserves the
-        lubricant there (:attr:`~camcontact.ehl.line_solution.LineEHLSolution.mass_flux`).
+        mass-conserving one also gives the film fraction behind the exit
+        (:attr:`~camcontact.ehl.line_solution.LineEHLSolution.mass_flux` is then constant), and it is the
+        model of a starved inlet.
+    supply : float, optional
+        Starvation: the content of the inlet layer H_oil = h_oil R/b^2 [-] carried into the domain at
+        X_a (h_oil the lubricant layer on both surfaces together, ahead of the contact, at ambient
+        density); None: flooded. Needs ``cavitation="mass_conserving"``; solved by
+        :func:`camcontact.ehl.line_starved.solve_starved`.
     """
 
     M: float
@@ -123,6 +129,7 @@ class LineEHLProblem:
     domain: tuple = (-4.0, 1.5)
     pressure_scale: float | None = None
     cavitation: str = "reynolds"
+    supply: float | None = None
 
     def __attrs_post_init__(self):
         if not (self.M > 0 and math.isfinite(self.M)):
@@ -145,6 +152,13 @@ class LineEHLProblem:
             raise InputError(f"LineEHLProblem.pressure_scale = {self.pressure_scale!r} must be > 0")
         if self.cavitation not in CAVITATION_MODELS:
             raise InputError(f"LineEHLProblem.cavitation = {self.cavitation!r}; allowed: {', '.join(CAVITATION_MODELS)}")
+        if self.supply is not None:
+            if not (isinstance(self.supply, (int, float)) and math.isfinite(self.supply) and self.supply > 0):
+                raise InputError(f"LineEHLProblem.supply = {self.supply!r} must be a finite inlet layer H_oil > 0 "
+                                 "(None: flooded)")
+            if self.cavitation != "mass_conserving":
+                raise InputError("LineEHLProblem.supply: a starved inlet needs cavitation='mass_conserving' (with "
+                                 "the Reynolds condition the lubricant is not conserved and the supply has no effect)")
         xa, xb = self.domain
         if not (xa < -1.0 and xb > 1.0):
             raise InputError(f"LineEHLProblem.domain = {self.domain!r} must contain the Hertz contact [-1, 1]")

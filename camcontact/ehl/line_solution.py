@@ -83,6 +83,14 @@ class LineEHLSolution:
         return np.ones_like(self.P) if self.theta is None else self.theta
 
     @property
+    def inlet_meniscus(self) -> float | None:
+        """X where the film becomes full when the inlet is starved (the film fraction at X_a below 1), else None."""
+        if self.theta is None or not self.theta[0] < 1.0:
+            return None
+        full = np.flatnonzero(self.theta >= 1.0)
+        return float(self.X[full[0]]) if full.size else None
+
+    @property
     def content(self) -> np.ndarray:
         """Lubricant content q = theta rho H per node [-] (mass per area in units of rho_0 b^2/R)."""
         return self.film_fraction * self.problem.density_ratio(self.P) * self.H
@@ -91,8 +99,8 @@ class LineEHLSolution:
     def mass_flux(self) -> np.ndarray:
         """Discrete mass flux F = q - xi dP/dX [-] through the n - 1 cell faces, in units of rho_0 u_m b^2/R,
         in the conservative form of the solver's operator: F_(i+1/2) = G_i - xi_(i+1/2) (P_(i+1) - P_i)/h with
-        the limited upwind wedge flux G_i = q_i + phi_i (q_i - q_(i-1))/2, phi_i = 1 between full-film nodes
-        and 0 elsewhere (:func:`camcontact.ehl._kernels.wedge_weight`; G_0 = q_0 + phi_1 (q_1 - q_0)/2 for the
+        the limited upwind wedge flux G_i = q_i + phi_i (q_i - q_(i-1))/2, phi_i = 1 where node i - 1 carries a
+        full film and 0 elsewhere (:func:`camcontact.ehl._kernels.wedge_weight`; G_0 = q_0 + phi_1 (q_1 - q_0)/2 for the
         first-order first node),
         so that F_(i+1/2) - F_(i-1/2) = -h L_i: constant where the discrete Reynolds equation holds,
         through pressurised and cavitated nodes alike (mass conservation). Steady operator (s = 1)."""
@@ -101,7 +109,7 @@ class LineEHLSolution:
         q = self.content
         xi = problem.density_ratio(P) * np.maximum(H, 0.0) ** 3 * np.exp(-problem.log_viscosity(P)) / problem.lam
         full = (P > 0.0) | (self.film_fraction >= 1.0)
-        phi = np.where(full[1:-1] & full[:-2], 0.5, 0.0)  # limiter of faces 1..n-2 (kernels' wedge_weight)
+        phi = np.where(full[:-2], 0.5, 0.0)  # limiter of faces 1..n-2: the upstream node (kernels' wedge_weight)
         G = np.empty(P.size - 1)
         G[1:] = q[1:-1] + phi * (q[1:-1] - q[:-2])
         G[0] = q[0] + phi[0] * (q[1] - q[0])
@@ -171,16 +179,24 @@ class LineEHLSolution:
         return self.H_c * factor, self.H_min * factor
 
     def plot(self, ax=None):
-        """Pressure and film over X (matplotlib)."""
+        """Pressure and film over X (matplotlib); with a film fraction (mass-conserving cavitation, starved
+        inlet), theta on the pressure axis, dashed, and the meniscus marked."""
         import matplotlib.pyplot as plt
 
         if ax is None:
             _, ax = plt.subplots(figsize=(7, 4))
         ax.plot(self.X, self.P, label="P = p/p_h")
-        ax.set(xlabel="X = x/b", ylabel="P", title=f"M = {self.problem.M:.4g}, L = {self.problem.L:.4g}, "
-               f"{self.X.size} nodes")
+        title = f"M = {self.problem.M:.4g}, L = {self.problem.L:.4g}, {self.X.size} nodes"
+        if self.theta is not None:
+            ax.plot(self.X, self.theta, color="tab:green", linestyle="--", label="θ (film fraction)")
+            if self.inlet_meniscus is not None:
+                ax.axvline(self.inlet_meniscus, color="0.5", linewidth=0.8)
+                title += f", starved: meniscus X = {self.inlet_meniscus:.3g}"
+        ax.set(xlabel="X = x/b", ylabel="P, θ" if self.theta is not None else "P", title=title)
         twin = ax.twinx()
         twin.plot(self.X, self.H, color="tab:orange", label="H = h R/b²")
         twin.set_ylabel("H")
         twin.set_ylim(0, max(4 * self.H_min, 1e-12) if self.H_min > 0 else None)
+        lines = ax.get_legend_handles_labels()[0] + twin.get_legend_handles_labels()[0]
+        ax.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8)
         return ax

@@ -167,7 +167,8 @@ def test_coarse_newton_kernel_equals_the_dense_reference_newton(M, L, n):
                                                                       tolerance=1e-11, max_iterations=60)
     assert converged
     for function in (_fas_kernels.coarse_newton, _fas_kernels.compiled("coarse_newton")):
-        P, H0, iterations, status = function(P0, 0.3, f, 0.01, grid.parabola, K, np.ones(n), grid.h, problem.lam,
+        P, H0, iterations, status = function(P0, 0.3, f, 0.01, grid.parabola, K, np.ones(n), np.zeros(n, dtype=bool),
+                                             grid.h, problem.lam,
                                              *problem.law_codes, problem.law_parameters, True, 1.0, 0.0, 1e-11, 60)
         assert status == 0 and iterations == len(residuals)
         np.testing.assert_allclose(P, P_ref, atol=1e-12)

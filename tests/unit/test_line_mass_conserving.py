@@ -94,13 +94,15 @@ def test_the_cavitated_outlet_carries_the_contact_s_mass_flux(flooded_pair):
     """Mass conservation to 1e-6 through the contact and its cavitated outlet: the discrete flux
     F = q - xi dP/dX is the same at every face (the Reynolds model, which fills the outlet, creates
     lubricant there: its flux grows 4x downstream), and in the outlet, where P = 0, the content theta rho H
-    alone carries it (so theta falls as the gap opens)."""
+    alone carries it (so theta falls as the gap opens; from the second dry node on, where the upwind flux no
+    longer reaches back into the pressurised film)."""
     reynolds, conserving = flooded_pair
     F = conserving.mass_flux
     assert np.ptp(F) / F.mean() < 1e-6
     outlet = (conserving.X > conserving.X[np.flatnonzero(conserving.P > 0)[-1]]) & (np.arange(F.size + 1) < F.size)
     assert outlet.sum() > 50
     theta = conserving.film_fraction
-    np.testing.assert_allclose((theta * conserving.H)[outlet], F.mean(), rtol=1e-6)
+    tail = np.flatnonzero(outlet)[1:]
+    np.testing.assert_allclose((theta * conserving.H)[tail], F.mean(), rtol=1e-6)
     assert np.all(np.diff(theta[outlet]) < 0) and theta[outlet].min() < 0.3
     assert reynolds.mass_flux[-1] > 4.0 * reynolds.mass_flux[0]
