@@ -42,8 +42,11 @@ problem, the implicit part c_t rho H into the operator
 the steady solver (same hierarchy, MLMI, coarsest-grid Newton, free-boundary rules),
 warm-started from the previous step; if a step diverges or stalls it is retried with the
 conservative settings of :data:`camcontact.ehl.line_multigrid.ROBUST`. Cavitation: P >= 0
-(complementarity, as in the steady solver; mass conservation in the cavitated zone is not
-modelled).
+(complementarity, as in the steady solver) with, by default, a full film everywhere (the lubricant of a
+cavitated region is not tracked); with ``cavitation="mass_conserving"`` the Jakobsson–Floberg–Olsson film
+fraction theta (:mod:`camcontact.ehl._kernels`) is solved in every step and carried to the next: the time
+derivative acts on the content theta rho H, so that what the contact leaves behind is what it meets when the
+entrainment reverses. Both ends of the domain are flooded reservoirs (theta = 1 at the inflow boundary).
 
 The march starts from the steady solution of the first instant (which needs u_m != 0) or from
 a given state. Per step it returns h_c = H(0) b_r^2/R_r, h_min, p_max, H0 and a convergence
@@ -105,8 +108,10 @@ class TransientScaling:
     @classmethod
     def from_reference(cls, *, R: float, w: float, u: float, E_reduced: float, eta0: float, alpha: float,
                        z: float | None = None, viscosity: str = "roelands", density: str = "dowson_higginson",
-                       p0: float = ROELANDS_P0, elastic: bool = True, domain: tuple = (-4.0, 4.0)) -> TransientScaling:
-        """Reference from R [m], w [N/m], u > 0 [m/s], E' [Pa], eta0 [Pa*s], alpha [1/Pa]."""
+                       p0: float = ROELANDS_P0, elastic: bool = True, domain: tuple = (-4.0, 4.0),
+                       cavitation: str = "reynolds") -> TransientScaling:
+        """Reference from R [m], w [N/m], u > 0 [m/s], E' [Pa], eta0 [Pa*s], alpha [1/Pa]; ``cavitation`` that of
+        :class:`LineEHLProblem` (``"mass_conserving"`` carries the film fraction from step to step)."""
         for name, value in (("R", R), ("w", w), ("u", u), ("E_reduced", E_reduced), ("eta0", eta0)):
             if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value) and value > 0):
                 raise InputError(f"transient EHL reference: {name} = {value!r} must be finite and > 0")
@@ -115,6 +120,7 @@ class TransientScaling:
         problem = LineEHLProblem.from_contact(R=R, w=w, E_reduced=E_reduced, u_m=u, eta0=eta0, alpha=alpha, z=z,
                                               viscosity=viscosity, density=density, p0=p0, elastic=elastic,
                                               domain=tuple(domain))
+        problem = attrs.evolve(problem, cavitation=cavitation)
         b = math.sqrt(8.0 * w * R / (math.pi * E_reduced))
         return cls(R=float(R), w=float(w), u=float(u), E_reduced=float(E_reduced), b=b, p_h=2.0 * w / (math.pi * b),
                    h_scale=b * b / R, time_scale=b / u, problem=problem, eta0=float(eta0), alpha=float(alpha))
@@ -141,6 +147,8 @@ class TransientStep:
     P: np.ndarray = attrs.field(repr=False, eq=False, default=None)
     #: H = h R_r/b_r^2 [-] on the reference grid (``keep_fields`` only, else None)
     H: np.ndarray = attrs.field(repr=False, eq=False, default=None)
+    #: film fraction theta [-] on the reference grid (``keep_fields`` only, else None; 1 unless mass-conserving)
+    theta: np.ndarray = attrs.field(repr=False, eq=False, default=None)
 
 
 @attrs.frozen
@@ -166,6 +174,8 @@ class TransientLineResult:
     P: np.ndarray | None = None
     H: np.ndarray | None = None
     wall_time: float = 0.0
+    #: film fraction per instant and node (``keep_fields`` only)
+    theta: np.ndarray | None = None
 
     @property
     def H_c(self) -> np.ndarray:
@@ -242,6 +252,7 @@ class _Attempt:
     H: np.ndarray = attrs.field(eq=False)
     record: ConvergenceRecord
     settings: MultigridSettings
+    theta: np.ndarray = attrs.field(eq=False)
 
 
 class TransientLineSolver:
@@ -299,6 +310,8 @@ class TransientLineSolver:
         self.H0 = 0.0
         self.q_history: list[np.ndarray] = []
         self.dt_previous: float | None = None
+        #: film fraction on the reference grid (1: full film; below 1 where a mass-conserving march cavitates)
+        self.theta = np.ones(self.n)
 
     def _hierarchy(self, settings, mirrored: bool = False) -> _TransientHierarchy:
         """The level hierarchy of ``settings``; ``mirrored``: of the domain reflected about X = 0
@@ -330,6 +343,10 @@ class TransientLineSolver:
         """Density ratio rho-bar [-] at P (p/p_r)."""
         return self.problem.density_ratio(P)
 
+    def content(self, P: np.ndarray, H: np.ndarray) -> np.ndarray:
+        """Lubricant content q = theta rho-bar H [-] per node (the film fraction of the current state)."""
+        return self.theta * self.density(P) * H
+
     # ------------------------------------------------------------------ starts
     def set_state(self, time_: float, P: np.ndarray, H0: float, R: float) -> None:
         """Start the march from a given state on this solver's grid (``X``): P (p/p_r), H0, radius R [m]."""
@@ -343,7 +360,8 @@ class TransientLineSolver:
         self.H0 = float(H0)
         self.time = float(time_)
         H = self.film(self.P, self.H0, R)
-        self.q_history = [self.density(self.P) * H]
+        self.theta = np.ones(self.n)
+        self.q_history = [self.content(self.P, H)]
         self.dt_previous = None
 
     def steady_start(self, time_: float, w: float, R: float, u_m: float) -> TransientStep:
@@ -378,10 +396,11 @@ class TransientLineSolver:
         H_c = steady.H_c * (b0 * b0 / R) / sc.h_scale
         H_rel = self.film(P, 0.0, R)
         H0 = H_c - float(np.interp(0.0, self.X, H_rel))
+        self.theta = np.ones(self.n)
         step = self._solve(P, H0, curvature, s, 0.0, np.zeros(self.n), f_load, start, "steady start")
         self.P, self.H0, self.time = step[0], step[1], float(time_)
         H = step[2]
-        self.q_history = [self.density(self.P) * H]
+        self.q_history = [self.content(self.P, H)]
         self.dt_previous = None
         return self._report(time_, H, step[3])
 
@@ -407,7 +426,7 @@ class TransientLineSolver:
         P, H0, H, record = self._solve(self.P, self.H0, curvature, s, a0 / dT, f, f_load, start,
                                        f"t = {time_:.6g} s")
         self.P, self.H0 = P, H0
-        self.q_history = [self.q_history[-1], self.density(P) * H]
+        self.q_history = [self.q_history[-1], self.content(P, H)]
         self.dt_previous = dt
         self.time = float(time_)
         return self._report(time_, H, record)
@@ -418,6 +437,7 @@ class TransientLineSolver:
             time=float(time_), h_c=float(np.interp(0.0, self.X, H)) * sc.h_scale, h_min=float(H.min()) * sc.h_scale,
             p_max=float(self.P.max()) * sc.p_h, H0=self.H0, record=record,
             P=self.P.copy() if self.keep_fields else None, H=H.copy() if self.keep_fields else None,
+            theta=self.theta.copy() if self.keep_fields else None,
         )
 
     def _solve(self, P, H0, curvature, s, c_t, f, f_load, start, label):
@@ -433,12 +453,16 @@ class TransientLineSolver:
         def attempt(settings):
             hierarchy = self._hierarchy(settings, mirrored)
             hierarchy.set_conditions(curvature, abs(s), c_t)
+            theta = hierarchy.theta(hierarchy.levels[-1])
+            theta[:] = flip(self.theta)  # every attempt starts from the film fraction of the last step
             P_new, H0_new, H, record = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
-            return _Attempt(P=flip(P_new), H0=H0_new, H=flip(H), record=record, settings=settings)
+            return _Attempt(P=flip(P_new), H0=H0_new, H=flip(H), record=record, settings=settings,
+                            theta=flip(theta))
 
         kept = run_ladder(self.settings, ROBUST, attempt, f"transient line EHL ({label})", strict=self.strict,
                           size=f"{self.n} nodes")
         record = attrs.evolve(kept.record, wall_time=time.perf_counter() - start)
+        self.theta = kept.theta
         return kept.P, kept.H0, kept.H, record
 
     def _cycles(self, hierarchy, P, H0, f, f_load):
@@ -455,8 +479,8 @@ class TransientLineSolver:
                 raise ConvergenceError("non-finite state")
             r = hierarchy.residual(finest, P, H) - f
             r[0] = r[-1] = 0.0
-            r = np.where(P > 0.0, r, np.maximum(r, 0.0))
-            if watch.after_cycle(P, (float(H.min()), H0), float(np.mean(np.abs(r[1:-1])) * finest.h),
+            r = np.where((P > 0.0) | (hierarchy.theta(finest) < 1.0), r, np.maximum(r, 0.0))
+            if watch.after_cycle(P, hierarchy.watched(finest, P, H, H0), float(np.mean(np.abs(r[1:-1])) * finest.h),
                                  hierarchy.load(finest, P) - f_load, hierarchy.work - work0):
                 break
         else:
@@ -497,7 +521,8 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
                     elastic: bool = True, levels: int = 8, scheme: str = "bdf2", tolerance: float = 1e-6,
                     reference: dict | None = None, domain: tuple | None = None,
                     settings: MultigridSettings | None = None, initial: tuple | None = None,
-                    keep_fields: bool = False, strict: bool = False, compiled: bool = True) -> TransientLineResult:
+                    keep_fields: bool = False, strict: bool = False, compiled: bool = True,
+                    cavitation: str = "reynolds") -> TransientLineResult:
     """Transient line-contact films over a sequence of instants (e.g. a cam cycle).
 
     Parameters
@@ -535,6 +560,11 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
     strict : bool
         Raise ConvergenceError at the first non-converged step (default: one ConvergenceWarning
         listing them).
+    cavitation : ``"reynolds"`` or ``"mass_conserving"``
+        Cavitation by clipping (the lubricant of a cavitated region is not tracked), or the
+        Jakobsson–Floberg–Olsson film fraction carried from step to step: the history of the time
+        derivative is the content theta rho H, so that lubricant left behind the contact is what returns
+        to it when the entrainment reverses (both domain ends are flooded reservoirs).
 
     Returns
     -------
@@ -567,7 +597,8 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         domain = automatic_transient_domain(u_m)
     scaling = TransientScaling.from_reference(R=reference["R"], w=reference["w"], u=reference["u"],
                                               E_reduced=E_reduced, eta0=eta0, alpha=alpha, z=z, viscosity=viscosity,
-                                              density=density, p0=p0, elastic=elastic, domain=tuple(domain))
+                                              density=density, p0=p0, elastic=elastic, domain=tuple(domain),
+                                              cavitation=cavitation)
     solver = TransientLineSolver(scaling, levels, scheme=scheme, tolerance=tolerance, settings=settings,
                                  strict=strict, compiled=compiled, keep_fields=keep_fields)
     steps = []
@@ -598,4 +629,5 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         records=tuple(s.record for s in steps), scaling=scaling, scheme=scheme, X=solver.X,
         P=np.array([s.P for s in steps]) if keep_fields else None,
         H=np.array([s.H for s in steps]) if keep_fields else None, wall_time=time.perf_counter() - start,
+        theta=np.array([s.theta for s in steps]) if keep_fields else None,
     )

@@ -73,6 +73,11 @@ class Multigrid(FilmModel):
         arcs, each warm-started angle by angle (the compiled kernels release the GIL, so two
         threads nearly halve a cycle on two cores). None: the CPU count, at most 4. The films
         of different thread counts agree within ``tolerance`` (each arc starts cold).
+    cavitation : str
+        ``"reynolds"`` (default: cavitation by clipping, a full film everywhere) or ``"mass_conserving"``
+        (Jakobsson–Floberg–Olsson film fraction, :mod:`camcontact.ehl.line_multigrid`): steady films are the
+        same; in the transient march of the ``squeeze`` effect the lubricant left behind the contact is what
+        it meets after an entrainment reversal (starvation at reversal).
 
     References
     ----------
@@ -94,6 +99,14 @@ class Multigrid(FilmModel):
     piezoviscosity: bool = True
     elasticity: bool = True
     threads: int | None = attrs.field(default=None)
+    cavitation: str = attrs.field(default="reynolds")
+
+    @cavitation.validator
+    def _check_cavitation(self, attribute, value):
+        from ..ehl.line_problem import CAVITATION_MODELS
+
+        if value not in CAVITATION_MODELS:
+            raise InputError(f"film model 'multigrid': cavitation = {value!r}; allowed: {', '.join(CAVITATION_MODELS)}")
 
     @threads.validator
     def _check_threads(self, attribute, value):
@@ -117,7 +130,7 @@ class Multigrid(FilmModel):
         first = LineEHLProblem.from_contact(R=R, w=w, E_reduced=E_reduced, u_m=u_m, eta0=eta0, alpha=alpha, z=z,
                                             viscosity=viscosity, density=density, p0=p0, elastic=self.elasticity)
         domain = self.domain if self.domain is not None else automatic_domain(first.M, first.L, self.elasticity)
-        return attrs.evolve(first, domain=tuple(domain))
+        return attrs.evolve(first, domain=tuple(domain), cavitation=self.cavitation)
 
     def evaluate(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson",
                  initial=None):

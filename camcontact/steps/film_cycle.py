@@ -199,7 +199,7 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
         z=lubricant_state.roelands_z if roelands and piezoviscosity else None,
         viscosity="roelands" if roelands and piezoviscosity else "barus",
         density=density_law, levels=film_model.levels, tolerance=max(film_model.tolerance, 1e-6),
-        strict=film_model.strict)
+        strict=film_model.strict, cavitation=getattr(film_model, "cavitation", "reynolds"))
     films = {"h_c": np.empty(theta.size), "h_min": np.empty(theta.size)}
     films["h_c"][order], films["h_min"][order] = result.h_c, result.h_min
     regime = np.empty(theta.size, dtype=object)

@@ -4,6 +4,7 @@ import importlib.util
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 
 BENCHMARKS = Path(__file__).resolve().parents[2] / "benchmarks"
@@ -123,3 +124,18 @@ def test_stability_map_quick(tmp_path):
     converged = frame[frame["status"] == "converged"]
     # finite films (at level 6 the discrete film of M = 1000 closes, H_min just below 0: too coarse a grid for it)
     assert len(converged) >= 10 and (converged["work units"] > 0).all() and np.isfinite(converged["H_min"]).all()
+
+
+def test_cavitation_cost_quick(tmp_path):
+    """benchmarks/cavitation_cost.py --quick: the mass-conserving and starved line solves and the transient
+    reversal with both cavitation models, their films, mass-flux spreads and costs (timings never asserted)."""
+    frame = _load("cavitation_cost").main(["--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "cavitation_cost.csv").exists()
+    assert list(frame["case"]) == ["steady"] * 2 + ["starved"] * 3 + ["transient"] * 2
+    steady = frame[frame["case"] == "steady"]
+    assert steady["H_min"].iloc[1] == pytest.approx(steady["H_min"].iloc[0], rel=1e-4)
+    starved = frame[frame["case"] == "starved"]
+    assert starved["converged"].all() and (starved["flux spread"] < 1e-4).all()
+    np.testing.assert_allclose(starved["H_c / H_c,flooded"], starved["supply [-]"], rtol=5e-3)
+    transient = frame[frame["case"] == "transient"]
+    assert (transient["h_min after reversal [nm]"] > 0).all()
