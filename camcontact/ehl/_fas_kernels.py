@@ -117,7 +117,8 @@ def fischer_burmeister(a, b):
 def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, pinned, h, lam, viscosity_code, density_code, params,
                   elastic, s, c_t, tolerance, max_iterations):
     """Semi-smooth Newton for the complementarity problem L(P, H0) = f, load = f_load on a small grid
-    (film fractions theta given: the injected ones of a mass-conserving solve, else 1).
+    (film fractions theta given: the injected ones of a mass-conserving solve, else 1; nodes with ``pinned``
+    set are held at P = 0 by the equation P_i = 0 in place of their complementarity condition).
 
     The coarsest-grid solver of the multigrid cycles: the same method as the dense reference
     :func:`camcontact.ehl.line_reference.newton_complementarity` (Fischer–Burmeister equation
@@ -333,12 +334,12 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
     dry_keeps_own_equation). Returns the work done in finest-grid relaxation units.
 
     ``theta_all`` holds the film fractions per level (all 1 for the classical operator). With
-    ``mass_conserving`` every level's sweeps solve for theta where P = 0 with the inlet ``supply``
-    (:func:`camcontact.ehl._kernels.relax_hybrid`), the coarse levels starting from the injected fine
-    values; only pressure corrections are interpolated back (to pressurised fine nodes). Measured: with
-    the injected theta frozen on the coarse levels, the cycles of a flooded M = 20, L = 10 contact
-    (level 7) circle at a residual of 2e-6 with a 0.5 % mass error at the rupture; updated there, they
-    converge as the classical ones do (1e-10 in 16 cycles, the mass flux constant to 2e-8).
+    ``mass_conserving`` the sweeps of the cycle's top level solve for theta where P = 0 with the inlet
+    ``supply`` (:func:`camcontact.ehl._kernels.relax_hybrid`); the coarse levels take theta by injection as a
+    coefficient and hold every node injected from a cavitated fine node at P = 0 (projected FAS: they correct
+    the pressurised region only, their Newton solve too). Measured: coarse levels that could pressurise those
+    nodes left M = 1000, L = 10 (level 8) stagnating; coarse levels that also solved for theta made the
+    transient steps after an entrainment reversal stagnate (level 6) instead of converging slowly.
     """
     omega_gs, omega_jacobi, switch, h0_relaxation = real_settings[0], real_settings[1], real_settings[2], real_settings[3]
     pre, post, coarsest_sweeps, window = int_settings[0], int_settings[1], int_settings[2], int_settings[3]
