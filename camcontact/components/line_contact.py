@@ -99,6 +99,11 @@ class LineContact(Component):
     asperity_radius : Quantity or str, optional
         Summit radius β [length] (> 0) for ``mixed``; default: σ/β = 0.05 (orders of magnitude of ground
         steel surfaces as Stribeck-curve models use them, Gelinck & Schipper 2000; not data).
+    oil_layer : Quantity or str, optional
+        Starved lubrication: the lubricant layer carried into the contact [length] (> 0), both surfaces
+        together, ahead of the contact (at ambient density). None (default): a flooded inlet. Needs the film
+        model ``multigrid``, which then solves the starved steady contact
+        (:func:`camcontact.ehl.line_starved.solve_starved`); the film formulas are for flooded contacts.
     name : str
     """
 
@@ -113,6 +118,7 @@ class LineContact(Component):
     friction_coefficient: float = number_field(default=0.0, validators=[in_range(0.0, 1.0)])
     asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
     asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    oil_layer: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
     def __attrs_post_init__(self) -> None:
         where = f"LineContact {self.name!r}"

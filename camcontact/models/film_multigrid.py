@@ -89,6 +89,8 @@ class Multigrid(FilmModel):
     reference = "Venner & Lubrecht (2000) Multilevel Methods in Lubrication; Tsuha (2015) §5.3, Table 5.1"
     geometry = "line"
     requires = (*LINE_INPUTS, "lubricant_state", "density_law")
+    #: a starved inlet's lubricant layer [m] (``LineContact.oil_layer``), when the scene gives one
+    optional_requires = ("oil_layer",)
     provides = ("h_c", "h_min")
     can_disable = ("piezoviscosity", "elasticity")
 
@@ -133,18 +135,30 @@ class Multigrid(FilmModel):
         return attrs.evolve(first, domain=tuple(domain), cavitation=self.cavitation)
 
     def evaluate(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson",
-                 initial=None):
+                 initial=None, oil_layer=None):
         """Films [m] from the numerical solution, with the solution and its convergence record.
 
         ``initial`` (a previous :class:`~camcontact.ehl.line_solution.LineEHLSolution`, e.g. of the
         neighbouring cam angle) warm-starts the solver instead of its full-multigrid start; its
         pressures are interpolated onto this problem's grid (the automatic domain may differ).
+        ``oil_layer`` [m]: a starved inlet's lubricant layer (both surfaces), solved with mass-conserving
+        cavitation by :func:`camcontact.ehl.line_starved.solve_starved` (its content h_oil R/b^2 is the
+        problem's ``supply``); a layer that the flooded contact could not pass leaves it flooded.
         """
         from ..ehl.line_multigrid import solve_multigrid
 
         problem = self.problem(R, w, E_reduced, u_m, eta0, alpha, lubricant_state, density_law)
-        solution = solve_multigrid(problem, self.levels, tolerance=self.tolerance, strict=self.strict,
-                                   initial=initial)
+        if oil_layer is not None:
+            from ..ehl.line_starved import solve_starved
+
+            if not (math.isfinite(oil_layer) and oil_layer > 0):
+                raise InputError(f"film model 'multigrid': oil_layer = {oil_layer!r} m must be finite and > 0")
+            b_squared = 8.0 * w * R / (math.pi * E_reduced)
+            starved = attrs.evolve(problem, cavitation="mass_conserving", supply=float(oil_layer) * R / b_squared)
+            solution = solve_starved(starved, self.levels, tolerance=self.tolerance, strict=self.strict)
+        else:
+            solution = solve_multigrid(problem, self.levels, tolerance=self.tolerance, strict=self.strict,
+                                       initial=initial)
         values = solution.dimensional(R, w, E_reduced)
         return {"h_c": values["h_c"], "h_min": values["h_min"], "ehl_solution": solution,
                 "convergence": solution.record, "M": problem.M, "L": problem.L}

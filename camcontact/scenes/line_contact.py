@@ -20,6 +20,10 @@ fluid's rheology, :func:`camcontact.steps.ehl_friction.contact_ehl_friction`) an
 asperity load sharing: the asperities' share, the film at the fluid's share, the lubrication regime and the
 boundary friction of the asperities in the friction). Friction is per unit length of the contact. A Stribeck
 curve (friction against speed) is a sweep of the scene: :func:`camcontact.scenes.stribeck.stribeck_sweep`.
+
+Starvation: ``LineContact.oil_layer`` (the lubricant layer ahead of the contact) with the film model
+``multigrid`` solves the starved contact (:func:`camcontact.ehl.line_starved.solve_starved`); a formula film
+model refuses the layer (the formulas are for flooded contacts).
 """
 
 from __future__ import annotations
@@ -30,12 +34,13 @@ from typing import Any
 from ..components.line_contact import LineContact
 from ..errors import InputError
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
+from ..units import format_quantity
 from ..steps.contact import APPROACHES, line_geometry, line_hertz
 from ..steps.ehl_friction import (EHL_EFFECTS, MIXED_FRICTION_READS, contact_ehl_friction, ehl_friction_inputs,
                                   fluid_traction_model, mixed_contact)
 from ..steps.film import (composite_roughness_step, ehl_groups, film_parameter, films_of, inlet_thermal_correction,
-                          isothermal_films, line_film, lubrication_regime_step, model_reads, resolve_film_model,
-                          thermal_films)
+                          isothermal_films, line_film, lubrication_regime_step, model_name, model_reads,
+                          resolve_film_model, thermal_films)
 from ..steps.kinematics import surface_kinematics
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import line_subsurface_stresses
@@ -81,7 +86,8 @@ def line_contact_inputs(contact: LineContact, effects: frozenset) -> dict[str, A
         "piezoviscosity": "piezoviscosity" in effects, "compressibility": "compressibility" in effects,
         **lubricant_inputs(contact.lubricant, contact.si.temperature),
     }
-    return inputs | given(F=contact.si.load, length=contact.si.length, sigma1=b1.si.roughness, sigma2=b2.si.roughness)
+    return inputs | given(F=contact.si.load, length=contact.si.length, sigma1=b1.si.roughness, sigma2=b2.si.roughness,
+                          oil_layer=contact.si.oil_layer)
 
 
 def film_steps(film_model: Any, thermal: bool) -> list[Step]:
@@ -122,6 +128,10 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
     if approach not in APPROACHES:
         raise InputError(f"line_contact scene: approach model {approach!r} unknown; choose 'hamrock' or 'palmgren'")
     film_model = resolve_film_model(models.get("film", DEFAULT_FILM), effects=effects)
+    if contact.oil_layer is not None and "oil_layer" not in getattr(film_model, "optional_requires", ()):
+        raise InputError(f"LineContact {contact.name!r}: oil_layer = {format_quantity(contact.oil_layer)} (a starved "
+                         f"inlet) needs the film model 'multigrid', not {model_name(film_model)!r}: the film formulas "
+                         "are for flooded contacts")
     steps = [Step.of(line_geometry), Step.of(surface_kinematics), Step.of(line_hertz), Step.of(APPROACHES[approach]),
              Step.of(line_subsurface_stresses), Step.of(composite_roughness_step),
              lubricant_step(contact.lubricant, contact.si.temperature), *film_steps(film_model, "thermal" in effects)]
