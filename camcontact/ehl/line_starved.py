@@ -86,8 +86,9 @@ def solve_starved(problem: LineEHLProblem, levels: int = 9, *, tolerance: float 
     Returns the solution on the grid of the reduced domain [X_m, X_b] extended upstream at the same spacing
     to X_a (unpressurised, theta = supply/H there), with its film fraction ``theta``; the record's message
     gives X_m, the solves and flux/supply - 1. A supply of at least the flooded contact's flux returns the
-    flooded solution (message "flooded"). Not converged (a solve, or the flux not within ``flux_tolerance``
-    of the supply): :class:`ConvergenceWarning`, or :class:`ConvergenceError` with ``strict``.
+    flooded solution (message "flooded"). Not converged (the chosen solve, or the flux not within ten times
+    ``tolerance`` of the supply after :data:`MAX_MENISCUS_SOLVES`): :class:`ConvergenceWarning`, or
+    :class:`ConvergenceError` with ``strict``.
     """
     if problem.supply is None:
         raise InputError("solve_starved: the problem has no supply (a flooded inlet); use solve_multigrid")
@@ -97,8 +98,8 @@ def solve_starved(problem: LineEHLProblem, levels: int = 9, *, tolerance: float 
     flooded = solve_multigrid(base, levels, tolerance=tolerance, settings=settings, strict=strict, compiled=compiled)
     F_ff = wet_flux(flooded)
     if supply >= F_ff:
-        return _result(problem, flooded, flooded, supply, start, 1, f"flooded: supply {supply:.6g} >= the flooded "
-                       f"flux {F_ff:.6g}", flooded.record.converged, strict)
+        return _result(problem, flooded, supply, start, f"flooded: supply {supply:.6g} >= the flooded flux {F_ff:.6g}",
+                       flooded.record.converged, strict)
     X_a, X_b = problem.domain
     target = max(10.0 * (tolerance or 1e-9), 1e-9)  # |F/supply - 1| of a converged meniscus
     solutions: dict[float, LineEHLSolution] = {}
@@ -147,8 +148,7 @@ def solve_starved(problem: LineEHLProblem, levels: int = 9, *, tolerance: float 
     chosen = solutions[x_m]
     converged = chosen.record.converged and abs(gc) <= target
     message = (f"meniscus at X = {x_m:.6g}; flux/supply - 1 = {gc:.3g}; {len(solutions) + 1} solves")
-    return _result(problem, _extended(chosen, X_a), flooded, supply, start, len(solutions) + 1, message, converged,
-                   strict, x_m)
+    return _result(problem, _extended(chosen, X_a), supply, start, message, converged, strict, x_m)
 
 
 #: the bracketing moves the meniscus this fraction of its distance to the Hertz inlet edge per solve
@@ -174,7 +174,7 @@ def _extended(solution: LineEHLSolution, X_a: float) -> LineEHLSolution:
     return attrs.evolve(solution, X=X_ext, P=P_ext, H=H_ext)
 
 
-def _result(problem, solution, flooded, supply, start, solves, message, converged, strict,
+def _result(problem, solution, supply, start, message, converged, strict,
             meniscus: float | None = None) -> LineEHLSolution:
     record = solution.record
     record = ConvergenceRecord(

@@ -96,8 +96,8 @@ def test_kernel_twins_equal_compiled(s, c_t):
     Pc = np.interp(Xc, X, P)
     table = kernel_coefficients(hc, n)
     K_over_pi = table[np.abs(np.arange(n)[:, None] - np.arange(n)[None, :])] / math.pi
-    args = (Pc, 0.3, np.zeros(n), 0.0, 0.5 * Xc**2, K_over_pi, np.ones(n), np.zeros(n, dtype=np.bool_), hc, problem.lam, *codes, params, True, s, c_t,
-            1e-11, 60)
+    args = (Pc, 0.3, np.zeros(n), 0.0, 0.5 * Xc**2, K_over_pi, np.ones(n), np.zeros(n, dtype=np.bool_), hc, problem.lam,
+            *codes, params, True, s, c_t, 1e-11, 60)
     py = _fas_kernels.PY["coarse_newton"](*args)
     nb = _fas_kernels.compiled("coarse_newton")(*args)
     np.testing.assert_allclose(nb[0], py[0], rtol=1e-9, atol=1e-10)
