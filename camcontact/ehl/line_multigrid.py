@@ -43,10 +43,10 @@ correct the pressurised region only; measured: letting them pressurise those nod
 stagnating). The wedge flux is first order behind a partly filled node. The solution carries theta
 (``film_fraction``) and its discrete mass flux (``mass_flux``). Measured on level 8 at tolerance 1e-10 over
 M in {2, 5, 20, 100, 1000} x L in {0, 2, 5, 10, 20}: 24 of 25 converge (M = 5, L = 20 stagnates, as it takes the
-Reynolds model 27 cycles); their films equal the Reynolds model's within 5e-7 (JFO rupture is the Reynolds
+Reynolds model 27 cycles); their films equal the Reynolds model's within 4e-7 (JFO rupture is the Reynolds
 condition in a steady line contact) and the mass flux is constant through contact and cavitated exit to
-3e-8 ... 8e-5 (3e-4 at M = 1000, L = 0). A starved inlet (``supply``) is solved by
-:func:`camcontact.ehl.line_starved.solve_starved`.
+2e-9 ... 2e-5 (the stop rule also watches the domain's lubricant content). A starved inlet (``supply``) is
+solved by :func:`camcontact.ehl.line_starved.solve_starved`.
 
 Every solve returns a :class:`~camcontact.ehl.line_solution.ConvergenceRecord` (residual and
 load error per cycle, work units, wall time, converged flag, notes). Not converged: a
@@ -70,7 +70,7 @@ from .deformation import DIRECT_BELOW, Deformation
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
 from .line_solution import ConvergenceRecord, LineEHLSolution
 
-__all__ = ["MONITOR_RULES", "LineHierarchy", "MultigridSettings", "converge_finest", "solve_multigrid"]
+__all__ = ["MONITOR_RULES", "LineHierarchy", "MultigridSettings", "solve_multigrid"]
 
 
 @attrs.frozen
@@ -218,10 +218,9 @@ class LineHierarchy:
         """Load-balance error [-]: trapezoidal integral of P dX minus pi/2."""
         return float(level.h * (P.sum() - 0.5 * (P[0] + P[-1])) - 0.5 * math.pi)
 
-    def freeze_dry(self, P: np.ndarray, dry: np.ndarray | None = None) -> None:
-        """Hold the currently cavitated nodes of the finest grid (or the finest-grid nodes ``dry``), and their
-        injections, at P = 0."""
-        dry = P <= 0.0 if dry is None else dry
+    def freeze_dry(self, P: np.ndarray) -> None:
+        """Hold the currently cavitated nodes of the finest grid (and their injections) at P = 0."""
+        dry = P <= 0.0
         for index in range(len(self.levels) - 1, -1, -1):
             level = self.levels[index]
             self.dry[level.k] = dry.copy()
@@ -349,10 +348,10 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> Line
             zero = np.zeros(solver.levels[k].n)
             for _ in range(settings.fmg_cycles):
                 P, H0 = solver.cycle(k, P, H0, zero, 0.0)
-    return converge_finest(solver, P, H0, tolerance, start)
+    return _converge_finest(solver, P, H0, tolerance, start)
 
 
-def converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance: float | None,
+def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance: float | None,
                     start: float) -> LineEHLSolution:
     """Cycles on the finest grid of ``solver`` from (P, H0) until :data:`MONITOR_RULES` stop them; the
     solution with its record (wall time counted from ``start``, a :func:`time.perf_counter` value).
