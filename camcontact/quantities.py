@@ -268,12 +268,10 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("a_rolling_outer", "m", "um", "Hertz semi-axis along rolling at the outer raceway"),
         _q("a_transverse_outer", "m", "um", "Hertz semi-axis across rolling at the outer raceway"),
         _q("most_loaded_race", None, None, "raceway of the contact with the highest pressure"),
-        _q("truncation_margin_inner", "rad", "deg", "angle left between the inner contact ellipse's edge and the shoulder "
-                                                    "(negative: truncated)"),
-        _q("truncation_margin_outer", "rad", "deg", "angle left between the outer contact ellipse's edge and the shoulder "
-                                                    "(negative: truncated)"),
-        _q("truncated_inner", None, None, "True where the inner contact ellipse runs over the shoulder"),
-        _q("truncated_outer", None, None, "True where the outer contact ellipse runs over the shoulder"),
+        *(_q(f"truncation_margin_{race}", "rad", "deg", f"angle left between the {race} contact ellipse's edge and "
+             "the shoulder (negative: truncated)") for race in ("inner", "outer")),
+        *(_q(f"truncated_{race}", None, None, f"True where the {race} contact ellipse runs over the shoulder")
+          for race in ("inner", "outer")),
         _q("truncated_balls", "", "", "number of balls whose contact ellipse runs over a shoulder"),
         _q("e", "", "", "ISO 281 limit of F_a/F_r for the axial-load factors"),
         _q("X", "", "", "ISO 281 radial load factor"),

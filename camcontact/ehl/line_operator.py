@@ -44,8 +44,7 @@ class LineGrid:
 
     def xi(self, P: np.ndarray, H: np.ndarray) -> np.ndarray:
         """xi = rho H^3 / (eta lambda) at the nodes; zero where the gap is closed (H <= 0)."""
-        problem = self.problem
-        return problem.density_ratio(P) * np.maximum(H, 0.0) ** 3 * np.exp(-problem.log_viscosity(P)) / problem.lam
+        return self.problem.flow_coefficient(P, H)
 
     def residual(self, P: np.ndarray, H: np.ndarray) -> np.ndarray:
         """L_i at interior nodes (zeros at the two boundary nodes)."""

@@ -225,6 +225,11 @@ class LineEHLProblem:
         p = P * self.p_h
         return (DH_A + DH_B * p) / (DH_A + p)
 
+    def flow_coefficient(self, P, H):
+        """xi = rho-bar H^3 / (eta-bar lambda) [-], the Poiseuille coefficient of a full film at P and H; zero where
+        the gap is closed (H <= 0)."""
+        return self.density_ratio(P) * np.maximum(H, 0.0) ** 3 * np.exp(-self.log_viscosity(P)) / self.lam
+
     def ddensity_ratio(self, P):
         """d rho-bar / dP [-] (0 if incompressible)."""
         P = np.maximum(np.asarray(P, dtype=float), 0.0)

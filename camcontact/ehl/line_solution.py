@@ -107,7 +107,7 @@ class LineEHLSolution:
         problem, P, H = self.problem, self.P, self.H
         h = float(self.X[1] - self.X[0])
         q = self.content
-        xi = problem.density_ratio(P) * np.maximum(H, 0.0) ** 3 * np.exp(-problem.log_viscosity(P)) / problem.lam
+        xi = problem.flow_coefficient(P, H)
         full = (P > 0.0) | (self.film_fraction >= 1.0)
         phi = np.where(full[:-2], 0.5, 0.0)  # limiter of faces 1..n-2: the upstream node (kernels' wedge_weight)
         G = np.empty(P.size - 1)

@@ -206,7 +206,7 @@ def _exit_film_fraction(solution: LineEHLSolution, theta: np.ndarray, first: int
     G_i = flux + xi_(i+1/2) (P_(i+1) - P_i)/h, q_i = (G_i + phi_i q_(i-1)/2)/(1 + phi_i/2)."""
     problem, P, H, X = solution.problem, solution.P, np.maximum(solution.H, 1e-300), solution.X
     h = float(X[1] - X[0])
-    xi = problem.density_ratio(P) * H**3 * np.exp(-problem.log_viscosity(P)) / problem.lam
+    xi = problem.flow_coefficient(P, H)
     theta = theta.copy()
     q_previous = float(problem.density_ratio(P[first - 1]) * H[first - 1])
     full_previous = True
