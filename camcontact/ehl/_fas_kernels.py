@@ -87,10 +87,10 @@ def solve_dense(A, b):
 
 
 @register_jitable
-def dense_state(P, H0, f, parabola, K_over_pi, theta, h, lam, viscosity_code, density_code, params, elastic, s, c_t,
-                H, L):
+def dense_state(P, H0, f, parabola, K_over_pi, theta, phi, h, lam, viscosity_code, density_code, params, elastic, s,
+                c_t, H, L):
     """Film H and L - f (interior; 0 at the ends) on a grid with the dense deformation matrix K/pi and the
-    film fractions theta."""
+    film fractions theta and flow factors phi."""
     n = P.shape[0]
     for i in range(n):
         value = H0 + parabola[i]
@@ -99,7 +99,7 @@ def dense_state(P, H0, f, parabola, K_over_pi, theta, h, lam, viscosity_code, de
                 if P[j] != 0.0:
                     value -= K_over_pi[i, j] * P[j]
         H[i] = value
-    reynolds_residual(P, H, theta, h, lam, viscosity_code, density_code, params, s, c_t, L)
+    reynolds_residual(P, H, theta, phi, h, lam, viscosity_code, density_code, params, s, c_t, L)
     for i in range(1, n - 1):
         L[i] -= f[i]
 
@@ -114,21 +114,22 @@ def fischer_burmeister(a, b):
 
 
 @register_jitable
-def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, pinned, h, lam, viscosity_code, density_code, params,
-                  elastic, s, c_t, tolerance, max_iterations):
+def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, phi, pinned, h, lam, viscosity_code, density_code,
+                  params, elastic, s, c_t, tolerance, max_iterations):
     """Semi-smooth Newton for the complementarity problem L(P, H0) = f, load = f_load on a small grid
-    (film fractions theta given: the injected ones of a mass-conserving solve, else 1; nodes with ``pinned``
+    (film fractions theta given: the injected ones of a mass-conserving solve, else 1; flow factors phi on the
+    Poiseuille coefficient given, 1 for the isothermal Newtonian film; nodes with ``pinned``
     set are held at P = 0 by the equation P_i = 0 in place of their complementarity condition).
 
     The coarsest-grid solver of the multigrid cycles: the same method as the dense reference
     :func:`camcontact.ehl.line_reference.newton_complementarity` (Fischer–Burmeister equation
-    phi(P_i, -s_i (L_i - f_i)) = 0 with s_i = 1/|dL_i/dP_i| per interior node, the trapezoidal
+    FB(P_i, -s_i (L_i - f_i)) = 0 with s_i = 1/|dL_i/dP_i| per interior node, the trapezoidal
     load balance h sum P - pi/2 = f_load for H0, exact Jacobian, backtracking on
-    |phi|^2 + load^2), written with loops so that it compiles; meant for n up to about 100
+    |FB|^2 + load^2), written with loops so that it compiles; meant for n up to about 100
     (dense Jacobian; its deformation part is K/pi times a five-diagonal matrix, O(n^2): the local
     band spans i - 2..i + 2 for either flow direction).
 
-    Returns (P >= 0, H0, iterations, status): status 0 converged (max |phi| and |load error|
+    Returns (P >= 0, H0, iterations, status): status 0 converged (max |FB| and |load error|
     below ``tolerance``), 1 non-finite Jacobian, 2 singular Newton matrix, 3 line search failed,
     4 iteration limit. P and H0 are the last accepted iterate.
     """
@@ -149,15 +150,15 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, pinned, h, lam, 
     J = np.empty((n, n))
     J_H0 = np.empty(n)
     scale = np.empty(n)
-    phi = np.empty(m)
+    fb = np.empty(m)
     da = np.empty(m)
     db = np.empty(m)
     A = np.empty((m + 1, m + 1))
     rhs = np.empty(m + 1)
     P_new = np.empty(n)
     hh = h * h
-    dense_state(P, H0, f, parabola, K_over_pi, theta, h, lam, viscosity_code, density_code, params, elastic, s, c_t,
-                H, L)
+    dense_state(P, H0, f, parabola, K_over_pi, theta, phi, h, lam, viscosity_code, density_code, params, elastic, s,
+                c_t, H, L)
     status = 4
     iterations = 0
     for _ in range(max_iterations):
@@ -169,8 +170,8 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, pinned, h, lam, 
             gap = max(H[j], 0.0)
             rho[j] = r * theta[j]
             drho[j] = d_r * theta[j]
-            xi[j] = r * gap * gap * gap * e / lam
-            dxi_dH[j] = 3.0 * r * gap * gap * e / lam
+            xi[j] = phi[j] * r * gap * gap * gap * e / lam
+            dxi_dH[j] = 3.0 * phi[j] * r * gap * gap * e / lam
             dxi_dP[j] = xi[j] * (d_r / r - dlog_eta)
         for i in range(n):
             for c in range(5):
@@ -226,11 +227,11 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, pinned, h, lam, 
             i = k + 1
             scale[i] = 1.0 / max(abs(J[i, i]), 1e-300)
             if pinned[i]:  # held at P = 0: the equation P_i = 0
-                phi[k], da[k], db[k] = P[i], 1.0, 0.0
+                fb[k], da[k], db[k] = P[i], 1.0, 0.0
             else:
-                phi[k], da[k], db[k] = fischer_burmeister(P[i], -scale[i] * L[i])
-            residual = max(residual, abs(phi[k]))
-            merit += phi[k] * phi[k]
+                fb[k], da[k], db[k] = fischer_burmeister(P[i], -scale[i] * L[i])
+            residual = max(residual, abs(fb[k]))
+            merit += fb[k] * fb[k]
         load = h * (P.sum() - 0.5 * (P[0] + P[n - 1])) - 0.5 * math.pi - f_load
         merit += load * load
         if residual < tolerance and abs(load) < tolerance:
@@ -244,7 +245,7 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, pinned, h, lam, 
                 A[k, l] = factor * J[i, l + 1]
             A[k, k] += da[k]
             A[k, m] = factor * J_H0[i]
-            rhs[k] = -phi[k]
+            rhs[k] = -fb[k]
         for l in range(m):
             A[m, l] = h
         A[m, m] = 0.0
@@ -262,7 +263,7 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, pinned, h, lam, 
             for k in range(m):
                 P_new[k + 1] = P[k + 1] + t * step[k]
             H0_new = H0 + t * step[m]
-            dense_state(P_new, H0_new, f, parabola, K_over_pi, theta, h, lam, viscosity_code, density_code, params,
+            dense_state(P_new, H0_new, f, parabola, K_over_pi, theta, phi, h, lam, viscosity_code, density_code, params,
                         elastic, s, c_t, H_new, L_new)
             trial = 0.0
             for k in range(m):
@@ -317,8 +318,8 @@ def level_load(P, h):
     return h * (P.sum() - 0.5 * (P[0] + P[P.shape[0] - 1])) - 0.5 * math.pi
 
 
-def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_of, offsets, h_of, parabola, K_local,
-              mlmi_on, m_of, c1s, c2s, weights, direct_below, K_dense, lam, viscosity_code, density_code, params,
+def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi_all, n_of, offsets, h_of, parabola,
+              K_local, mlmi_on, m_of, c1s, c2s, weights, direct_below, K_dense, lam, viscosity_code, density_code, params,
               elastic, real_settings, int_settings, s, c_t, mass_conserving, supply):
     """Execute one cycle ``schedule`` (:func:`cycle_schedule`) in place on the level buffers, for the
     operator of speed ratio s and squeeze coefficient c_t (steady: s = 1, c_t = 0).
@@ -332,6 +333,10 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
     omega_jacobi, switch, h0_relaxation); ``int_settings`` = (pre_sweeps, post_sweeps,
     coarsest_sweeps, window, correct_pressurised_only, freeze_free_boundary,
     dry_keeps_own_equation). Returns the work done in finest-grid relaxation units.
+
+    ``phi_all`` holds the flow factors per level (the Poiseuille coefficient's factor, all 1 for the isothermal
+    Newtonian film; see :mod:`camcontact.ehl._kernels`), given on every level (the hierarchy restricts the finest
+    level's, :meth:`camcontact.ehl.line_multigrid.LineHierarchy.set_flow_factor`).
 
     ``theta_all`` holds the film fractions per level (all 1 for the classical operator). With
     ``mass_conserving`` the sweeps of the cycle's top level solve for theta where P = 0 with the inlet
@@ -362,6 +367,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
         P = P_all[o:o + n]
         f = f_all[o:o + n]
         theta = theta_all[o:o + n]
+        phi = phi_all[o:o + n]
         update_theta = mass_conserving and k == top
         dry = pin_all[o:o + n] if mass_conserving and k != top else dry_all[o:o + n]
         K = K_local[k] if elastic else zero_K
@@ -387,12 +393,12 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
         for _ in range(sweeps):
             H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                            direct_below, elastic)
-            relax_hybrid(P, H, theta, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi,
+            relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi,
                          switch, window, 1, n - 2, dry, s, c_t, update_theta, supply)
             work += (n - 2) / n_finest
         if op == SOLVE:
             P_new, H0_new, iterations, status = coarse_newton(
-                P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], theta, dry, h, lam, viscosity_code,
+                P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], theta, phi, dry, h, lam, viscosity_code,
                 density_code, params, elastic, s, c_t, 1e-11, 60)
             work += iterations * n / n_finest
             if status == 0:
@@ -403,7 +409,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
                 for _ in range(coarsest_sweeps):
                     H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                                    direct_below, elastic)
-                    relax_hybrid(P, H, theta, f, h, lam, viscosity_code, density_code, params, K, omega_gs,
+                    relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, params, K, omega_gs,
                                  omega_jacobi, switch, window, 1, n - 2, dry, s, c_t, update_theta, supply)
                     work += (n - 2) / n_finest
                     H0s[k] += h0_relaxation * (level_load(P, h) - loads[k])
@@ -411,7 +417,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
             H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                            direct_below, elastic)
             r = np.empty(n)
-            reynolds_residual(P, H, theta, h, lam, viscosity_code, density_code, params, s, c_t, r)
+            reynolds_residual(P, H, theta, phi, h, lam, viscosity_code, density_code, params, s, c_t, r)
             for i in range(n):
                 r[i] = 0.0 if P[i] <= 0.0 else f[i] - r[i]
             if freeze_boundary:  # no residual transfer at nodes beside the cavitation boundary
@@ -429,10 +435,12 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, n_o
                 if mass_conserving:
                     pin_all[oc + j] = dry_all[oc + j] or not P[2 * j] > 0.0
             theta_c = theta_all[oc:oc + nc]
+            phi_c = phi_all[oc:oc + nc]
             Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                             direct_below, elastic)
             fc = f_all[oc:oc + nc]
-            reynolds_residual(Pc, Hc, theta_c, h_of[k - 1], lam, viscosity_code, density_code, params, s, c_t, fc)
+            reynolds_residual(Pc, Hc, theta_c, phi_c, h_of[k - 1], lam, viscosity_code, density_code, params, s, c_t,
+                              fc)
             for j in range(1, nc - 1):
                 fc[j] += 0.25 * r[2 * j - 1] + 0.5 * r[2 * j] + 0.25 * r[2 * j + 1]
             if dry_own:  # coarse nodes dry with both neighbours dry keep their own equation

@@ -28,6 +28,11 @@ clipping) operator; :func:`relax_hybrid` with ``update_theta`` solves for theta 
 boundary node upstream (X_a for s > 0, X_b for s < 0) holds the supply: its content is the inlet
 layer (starvation) or a full film.
 
+phi is a per-node flow factor on the Poiseuille coefficient, xi = phi rho H^3/(eta lambda): 1 for the
+isothermal Newtonian film; the thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`)
+puts there the film's viscosity at its temperature and the Eyring flow enhancement, held fixed during a
+solve (the kernels' linearisations treat it as a coefficient).
+
 Importing this module imports numba but compiles nothing.
 """
 
@@ -333,14 +338,14 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
 
 # ----------------------------------------------------------------------------- EHL operator
 @register_jitable
-def nodal_coefficients(P, H, theta, lam, viscosity_code, density_code, params, rho, xi):
-    """Fill rho (theta times the density ratio: the content factor of the wedge) and xi = rho_law H^3 /
-    (eta lambda) (a full film's) at every node."""
+def nodal_coefficients(P, H, theta, phi, lam, viscosity_code, density_code, params, rho, xi):
+    """Fill rho (theta times the density ratio: the content factor of the wedge) and xi = phi rho_law H^3 /
+    (eta lambda) (a full film's, phi the node's flow factor) at every node."""
     for i in range(P.shape[0]):
         r = density_ratio(P[i], density_code, params)
         rho[i] = r * theta[i]
         hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
-        xi[i] = r * hi * hi * hi * math.exp(-log_viscosity(P[i], viscosity_code, params)) / lam
+        xi[i] = phi[i] * r * hi * hi * hi * math.exp(-log_viscosity(P[i], viscosity_code, params)) / lam
 
 
 @register_jitable
@@ -367,20 +372,21 @@ def law_state(p, viscosity_code, density_code, params):
 
 
 @register_jitable
-def nodal_laws(P, H, theta, lam, viscosity_code, density_code, params, rho, xi, dlx, drh):
-    """:func:`nodal_coefficients` plus d ln(xi)/dP and d (theta rho)/dP, sharing one log1p and exp per node."""
+def nodal_laws(P, H, theta, phi, lam, viscosity_code, density_code, params, rho, xi, dlx, drh):
+    """:func:`nodal_coefficients` plus d ln(xi)/dP and d (theta rho)/dP (the flow factor phi held fixed), sharing
+    one log1p and exp per node."""
     for i in range(P.shape[0]):
         p = P[i]
         hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
         if p <= 0.0:
             rho[i] = theta[i]
-            xi[i] = hi * hi * hi / lam
+            xi[i] = phi[i] * hi * hi * hi / lam
             dlx[i] = 0.0
             drh[i] = 0.0
             continue
         r, d_r, log_eta, dlog_eta = law_state(p, viscosity_code, density_code, params)
         rho[i] = r * theta[i]
-        xi[i] = r * hi * hi * hi * math.exp(-log_eta) / lam
+        xi[i] = phi[i] * r * hi * hi * hi * math.exp(-log_eta) / lam
         dlx[i] = d_r / r - dlog_eta
         drh[i] = d_r * theta[i]
 
@@ -401,12 +407,12 @@ def operator_at(i, P, H, rho, xi, h, s, c_t):
 
 
 @register_jitable
-def reynolds_residual(P, H, theta, h, lam, viscosity_code, density_code, params, s, c_t, out):
-    """out_i = L_i(P, H, theta) at interior nodes; boundary entries 0."""
+def reynolds_residual(P, H, theta, phi, h, lam, viscosity_code, density_code, params, s, c_t, out):
+    """out_i = L_i(P, H, theta) at interior nodes (flow factors phi); boundary entries 0."""
     n = P.shape[0]
     rho = np.empty(n)
     xi = np.empty(n)
-    nodal_coefficients(P, H, theta, lam, viscosity_code, density_code, params, rho, xi)
+    nodal_coefficients(P, H, theta, phi, lam, viscosity_code, density_code, params, rho, xi)
     out[0] = 0.0
     out[n - 1] = 0.0
     for i in range(1, n - 1):
@@ -414,7 +420,7 @@ def reynolds_residual(P, H, theta, h, lam, viscosity_code, density_code, params,
 
 
 @register_jitable
-def relax_hybrid(P, H, theta, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
+def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi, switch,
                  window, first, last, dry, s, c_t, update_theta, supply):
     """One hybrid Gauss–Seidel / Jacobi-distributive sweep for L(P, theta) = f, in place on P and H
     (and theta with ``update_theta``).
@@ -457,7 +463,7 @@ def relax_hybrid(P, H, theta, f, h, lam, viscosity_code, density_code, params, K
     xi = np.empty(n)
     dlx = np.empty(n)
     drh = np.empty(n)
-    nodal_laws(P, H, theta, lam, viscosity_code, density_code, params, rho, xi, dlx, drh)
+    nodal_laws(P, H, theta, phi, lam, viscosity_code, density_code, params, rho, xi, dlx, drh)
     delta = np.zeros(n)
     jacobi = np.zeros(n, dtype=np.bool_)
     count = 0
@@ -512,7 +518,7 @@ def relax_hybrid(P, H, theta, f, h, lam, viscosity_code, density_code, params, K
                     r_m = density_ratio(P[m], density_code, params)
                     rho[m] = r_m * theta[m]
                     hm = max(H[m], 0.0)
-                    xi[m] = r_m * hm * hm * hm * math.exp(-log_viscosity(P[m], viscosity_code, params)) / lam
+                    xi[m] = phi[m] * r_m * hm * hm * hm * math.exp(-log_viscosity(P[m], viscosity_code, params)) / lam
         elif jacobi[i - 1]:
             dipole = diagonal - off_diagonal
             if dipole != 0.0:

@@ -178,6 +178,9 @@ class LineHierarchy:
         #: film fractions per level (1: full film); the cycles solve for them on their top level when the
         #: problem's cavitation is mass-conserving
         self.theta_all = np.ones(total)
+        #: flow factors per level (the Poiseuille coefficient's factor; 1: isothermal Newtonian film), set on the
+        #: finest level by :meth:`set_flow_factor` and injected to the coarse ones
+        self.phi_all = np.ones(total)
         self.H0s, self.loads = np.zeros(len(levels)), np.zeros(len(levels))
         self.real_settings = np.array([s.omega_gs, s.omega_jacobi, s.switch, s.h0_relaxation])
         self.int_settings = np.array([s.pre_sweeps, s.post_sweeps, s.coarsest_sweeps, s.window,
@@ -197,6 +200,23 @@ class LineHierarchy:
         o = int(self.offsets[index])
         return self.theta_all[o:o + level.n]
 
+    def flow_factor(self, level: _Level) -> np.ndarray:
+        """The flow factors of ``level`` (a view into the cycles' buffer)."""
+        o = int(self.offsets[level.k - 1])
+        return self.phi_all[o:o + level.n]
+
+    def set_flow_factor(self, phi: np.ndarray) -> None:
+        """Flow factors ``phi`` of the finest grid; each coarser level takes the full-weighting restriction of
+        ln phi of the level above (injection left the cycles diverging where phi changes by e^5 within a few
+        nodes; measured, see :mod:`camcontact.ehl.line_thermal`). Only the finest grid's factors define the
+        solution; the coarse ones only steer its corrections."""
+        log_phi = np.log(phi)
+        for index in range(len(self.levels) - 1, -1, -1):
+            self.flow_factor(self.levels[index])[:] = np.exp(log_phi)
+            coarse = log_phi[::2].copy()
+            coarse[1:-1] = 0.25 * log_phi[1:-2:2] + 0.5 * log_phi[2:-1:2] + 0.25 * log_phi[3::2]
+            log_phi = coarse
+
     def watched(self, level: _Level, P: np.ndarray, H: np.ndarray, H0: float) -> tuple[float, ...]:
         """The values whose changes from cycle to cycle decide convergence: (H_min, H0), and with mass-conserving
         cavitation also the lubricant content h sum theta rho H of the grid (the films settle before the film
@@ -210,8 +230,8 @@ class LineHierarchy:
     def residual(self, level: _Level, P: np.ndarray, H: np.ndarray) -> np.ndarray:
         """Reynolds operator L_i(P, H, theta) [-] at the interior nodes of ``level`` (boundary entries 0)."""
         out = np.empty(level.n)
-        self.kernel("reynolds_residual")(P, H, self.theta(level), level.h, self.lam, self.viscosity_code,
-                                         self.density_code, self.params, self.s, self.c_t, out)
+        self.kernel("reynolds_residual")(P, H, self.theta(level), self.flow_factor(level), level.h, self.lam,
+                                         self.viscosity_code, self.density_code, self.params, self.s, self.c_t, out)
         return out
 
     def load(self, level: _Level, P: np.ndarray) -> float:
@@ -259,9 +279,9 @@ class LineHierarchy:
         self.H0s[k], self.loads[k] = H0, f_load
         self.work += self.cycle_kernel(
             schedule, self.P_all, self.P_old, self.f_all, self.H0s, self.loads, self.dry_all, self.theta_all,
-            self.n_of, self.offsets, self.h_of, self.parabola, self.K_local, self.mlmi_on, self.m_of, self.c1s,
-            self.c2s, _kernels.INTERP6, DIRECT_BELOW, self.K_dense, self.lam, self.viscosity_code, self.density_code,
-            self.params, self.problem.elastic, self.real_settings, self.int_settings, self.s, self.c_t,
+            self.phi_all, self.n_of, self.offsets, self.h_of, self.parabola, self.K_local, self.mlmi_on, self.m_of,
+            self.c1s, self.c2s, _kernels.INTERP6, DIRECT_BELOW, self.K_dense, self.lam, self.viscosity_code,
+            self.density_code, self.params, self.problem.elastic, self.real_settings, self.int_settings, self.s, self.c_t,
             self.mass_conserving, self.supply,
         )
         return self.P_all[o:o + n].copy(), float(self.H0s[k])
@@ -283,6 +303,7 @@ def solve_multigrid(
     initial: LineEHLSolution | None = None,
     strict: bool = False,
     compiled: bool = True,
+    flow_factor: np.ndarray | None = None,
 ) -> LineEHLSolution:
     """Solve the line-contact problem on ``levels`` grid levels by FAS multigrid.
 
@@ -308,25 +329,39 @@ def solve_multigrid(
         Raise :class:`ConvergenceError` instead of warning when not converged.
     compiled : bool
         Use the numba kernels (False: the plain-Python twins, slow; for tests).
+    flow_factor : array, optional
+        Factor phi > 0 per node of the finest grid on the Poiseuille coefficient, xi = phi rho H^3/(eta lambda)
+        (None: 1, the isothermal Newtonian film); the thermal and non-Newtonian solver
+        (:mod:`camcontact.ehl.line_thermal`) gives the film's viscosity at its temperature and the Eyring flow
+        enhancement through it. Held fixed during the solve; kept on the solution (``flow_factor``). (A full
+        multigrid start solves its start level without the factors; the cycles on the levels above take them.)
     """
     if not (isinstance(levels, (int, np.integer)) and 1 <= levels <= 16):
         raise InputError(f"solve_multigrid: levels = {levels!r}; allowed 1..16")
+    if flow_factor is not None:
+        flow_factor = np.asarray(flow_factor, dtype=float)
+        if flow_factor.shape != (grid_points(levels),) or not np.all(np.isfinite(flow_factor) & (flow_factor > 0)):
+            raise InputError(f"solve_multigrid: flow_factor of shape {flow_factor.shape}; allowed: finite values > 0, "
+                             f"one per node of level {levels} ({grid_points(levels)} nodes)")
     if problem.supply is not None:
         raise InputError(f"solve_multigrid: the problem has a starved inlet (supply = {problem.supply!r}); solve it "
                          "with camcontact.ehl.line_starved.solve_starved, which finds its meniscus")
     settings = settings or MultigridSettings()
-    return run_ladder(settings, ROBUST, lambda attempt: _solve_once(problem, levels, tolerance, attempt, initial, compiled),
+    return run_ladder(settings, ROBUST,
+                      lambda attempt: _solve_once(problem, levels, tolerance, attempt, initial, compiled, flow_factor),
                       f"line EHL multigrid (M = {problem.M:.4g}, L = {problem.L:.4g})", strict=strict,
                       size=f"{grid_points(levels)} nodes")
 
 
-def _solve_once(problem, levels, tolerance, settings, initial, compiled) -> LineEHLSolution:
+def _solve_once(problem, levels, tolerance, settings, initial, compiled, flow_factor=None) -> LineEHLSolution:
     """One multigrid attempt (see :func:`solve_multigrid`); raises ConvergenceError on divergence."""
     if not (isinstance(levels, (int, np.integer)) and 1 <= levels <= 16):
         raise InputError(f"solve_multigrid: levels = {levels!r}; allowed 1..16")
     settings = settings or MultigridSettings()
     start = time.perf_counter()
     solver = LineHierarchy(problem, int(levels), settings, compiled)
+    if flow_factor is not None:
+        solver.set_flow_factor(flow_factor)
     finest = solver.levels[-1]
     if initial is not None:
         P = np.maximum(np.interp(finest.X, initial.X, initial.P), 0.0)
@@ -385,8 +420,9 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
     H = solver.film(finest, P, H0)
     record = _record(solver, residuals, loads, works, start, converged, message, tolerance)
     theta = solver.theta(finest).copy() if solver.mass_conserving else None
+    phi = solver.flow_factor(finest)
     return LineEHLSolution(problem=problem, level=int(levels), X=finest.X, P=P, H=H, H0=float(H0), record=record,
-                           settings=settings, theta=theta)
+                           settings=settings, theta=theta, flow_factor=None if np.all(phi == 1.0) else phi.copy())
 
 
 _MAX_START_LEVEL = 6  # the dense start solver stays below ~1 s

@@ -75,6 +75,9 @@ class LineEHLSolution:
     settings: object = attrs.field(default=None, eq=False)
     #: film fraction per node of a mass-conserving solve (None: a full film, the Reynolds cavitation model)
     theta: np.ndarray | None = attrs.field(default=None, repr=False, eq=False)
+    #: flow factor per node on the Poiseuille coefficient (None: 1, the isothermal Newtonian film; see
+    #: :func:`camcontact.ehl.line_multigrid.solve_multigrid`)
+    flow_factor: np.ndarray | None = attrs.field(default=None, repr=False, eq=False)
 
     @property
     def film_fraction(self) -> np.ndarray:
@@ -108,6 +111,8 @@ class LineEHLSolution:
         h = float(self.X[1] - self.X[0])
         q = self.content
         xi = problem.flow_coefficient(P, H)
+        if self.flow_factor is not None:
+            xi = xi * self.flow_factor
         full = (P > 0.0) | (self.film_fraction >= 1.0)
         phi = np.where(full[:-2], 0.5, 0.0)  # limiter of faces 1..n-2: the upstream node (kernels' wedge_weight)
         G = np.empty(P.size - 1)

@@ -1,0 +1,269 @@
+"""Numba kernels of the thermal, non-Newtonian line EHL solver (:mod:`camcontact.ehl.line_thermal`), each with
+its plain-Python twin (see :mod:`camcontact.jit`).
+
+Film rheology (per node, viscosity eta uniform across the film): an Eyring fluid, du/dz = (tau0/eta)
+sinh(tau/tau0), under the shear stress tau(z) = tau_m + p' (z - h/2) of a thin film (p' = dp/dx, tau_m the
+mid-plane stress). Integrated across the film in closed form, with s = h p'/(2 tau0) and
+Lambda = eta (u2 - u1)/(tau0 h):
+
+.. math::
+    \\sinh\\frac{\\tau_m}{\\tau_0} = \\Lambda\\,\\frac{s}{\\sinh s}, \\qquad
+    q = u_m h - \\Phi\\,\\frac{h^3 p'}{12\\eta}, \\qquad
+    \\Phi = \\cosh\\frac{\\tau_m}{\\tau_0}\\,g(s) = \\sqrt{g(s)^2 + (\\Lambda\\,r(s))^2},
+
+g(s) = 3 (s cosh s - sinh s)/s^3, r(s) = 3 (s coth s - 1)/s^2 (both 1 at s = 0): the Poiseuille flow of the
+film is Phi times the Newtonian one. (Derivation checked independently by numerical integration of the
+velocity profile, to 1e-13.) The dissipation per unit area is, for any rheology with tau linear in z,
+Q = tau_m (u2 - u1) + p' (u_m h - q). A Newtonian film is the limit tau0 -> infinity: tau_m = eta (u2 - u1)/h,
+Phi = 1 (tau0 <= 0 selects it here).
+
+The kernels use the limit s -> 0, the Reynolds–Eyring equation of Conry, Wang & Cusano (1987):
+sinh(tau_m/tau0) = Lambda, Phi = cosh(tau_m/tau0) = sqrt(1 + Lambda^2). The full closed form was tried first:
+at the pressure spike of an isothermal start s reaches 20-60 (wall stresses of 20-60 tau0, far above any
+limiting shear stress), Phi ~ e^44 there, and the multigrid solve with even 30 % of that flow factor
+diverged (measured: M = 6.7, L = 16.5, S = 0.5, level 8). With s -> 0 the flow factor depends on the film and
+the sliding only, not on the pressure gradient the spike feeds back on.
+
+The dissipation is evaluated at each node's Poiseuille flux q_P = -Phi h^3 p'/(12 eta) (that of the current
+pressure solution, which the mass balance fixes) rather than at its pressure gradient:
+Q = tau_m (u2 - u1) + 12 eta q_P^2/(Phi h^3), which falls as the temperature rises. At a fixed p' the
+Poiseuille heat would rise as the viscosity falls, and the first energy model ran away to 1000 K at the
+pressure spike of an isothermal start (measured: S = 0.02, level 8); the spike's flow then adjusts in the
+Reynolds solve.
+
+Energy (:func:`layer_sweep`): the temperature at N + 1 Chebyshev–Lobatto points across the film (the two
+surfaces included) at every node of a uniform grid along x,
+
+.. math::
+    \\rho c\\,u(\\zeta)\\,\\frac{\\partial T}{\\partial x} = \\frac{k}{h^2}\\frac{\\partial^2 T}{\\partial\\zeta^2}
+    + \\tau\\dot\\gamma, \\qquad
+    T_j(x) - T_0 = \\frac{1}{e_j\\sqrt{\\pi u_j}}\\int_{-\\infty}^{x}\\frac{q_j(s)}{\\sqrt{x - s}}\\,ds
+
+with the film's velocity profile u(zeta) = u1 + (u2 - u1) zeta + 6 (q_P/h) zeta (1 - zeta) (its reverse flow in
+the inlet included: the x-derivative is upwinded by the sign of u at each film point, and downstream and
+upstream sweeps alternate), the local dissipation tau gamma-dot of the film's linear stress profile, and each
+surface a half-space moving at u_j under the heat flux q_j it takes from the film (Jaeger 1942, high Peclet
+number; e_j its effusivity), q_j piecewise constant on the cells of the grid. Conduction along x and the
+convection across the film (w dT/dz) are neglected (thin film). The viscosity is uniform across the film at
+the film's mean temperature: the system of a node is linear for a given mean, and the mean is found as the
+root of t = mean(T(t)) by the Illinois method.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba.extending import register_jitable
+
+from ..jit import compile_kernel
+from ._fas_kernels import solve_dense
+
+__all__ = ["PY", "compiled"]
+
+#: largest temperature rise the march looks for [K]: a node whose balance has no root below it (a Newtonian
+#: film in heavy sliding, thermal runaway) is reported at this rise and counted as not converged
+MAX_RISE = 1000.0
+
+
+@register_jitable
+def film_state(eta, h, flux, du, tau0):
+    """(tau_m [Pa], Phi [-], Q [W/m^2]): mid-plane shear stress, Poiseuille flow factor and dissipation per
+    unit area of a film of viscosity eta [Pa s] and thickness h [m] carrying the Poiseuille volume flux
+    ``flux`` = -Phi h^3 p'/(12 eta) [m^2/s] at the sliding speed du = u2 - u1 [m/s]; Eyring stress tau0 [Pa]
+    (<= 0: Newtonian). Eyring: the Reynolds–Eyring form (s -> 0, module docstring), sinh(tau_m/tau0) =
+    eta du/(tau0 h), Phi = cosh(tau_m/tau0). Q = tau_m du + 12 eta flux^2/(Phi h^3)."""
+    if h <= 0.0 or eta <= 0.0:
+        return 0.0, 1.0, 0.0
+    if tau0 <= 0.0:
+        tau_m = eta * du / h
+        phi = 1.0
+    else:
+        lam = eta * du / (tau0 * h)
+        tau_m = tau0 * math.asinh(lam)
+        phi = math.sqrt(1.0 + lam * lam)
+    return tau_m, phi, tau_m * du + 12.0 * eta * flux * flux / (phi * h * h * h)
+
+
+@register_jitable
+def jaeger_weights(dx, n):
+    """w_d = int over cell j = i - d of 1/sqrt(x_i - s) ds [m^0.5], cells [x_j - dx/2, x_j + dx/2] cut at x_i:
+    w_0 = 2 sqrt(dx/2), w_d = 2 (sqrt((d + 1/2) dx) - sqrt((d - 1/2) dx))."""
+    w = np.empty(n)
+    w[0] = 2.0 * math.sqrt(0.5 * dx)
+    for d in range(1, n):
+        w[d] = 2.0 * (math.sqrt((d + 0.5) * dx) - math.sqrt((d - 0.5) * dx))
+    return w
+
+
+@register_jitable
+def layer_node(i, t, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, heat_capacity, c1, c2, A1, A2, zeta, D,
+               D2, weights, T, A, b):
+    """Temperature rises at the film points of node i (returned, with their film mean) for the film viscosity
+    eta_iso[i] exp(-beta t) (t the film's mean temperature rise assumed; see :func:`layer_sweep`)."""
+    N = zeta.shape[0] - 1
+    n = h.shape[0]
+    hi = h[i]
+    eta = eta_iso[i] * math.exp(-beta * t)
+    tau_m, Phi, Q = film_state(eta, hi, flux[i], du, tau0)
+    gradient = -12.0 * eta * flux[i] / (Phi * hi * hi * hi)
+    kh = conductivity / hi
+    for r in range(N + 1):
+        for c in range(N + 1):
+            A[r, c] = 0.0
+    A[0, 0] = 1.0
+    A[N, N] = 1.0
+    for c in range(N + 1):
+        A[0, c] -= c1 * kh * D[0, c]
+        A[N, c] += c2 * kh * D[N, c]
+    b[0] = A1
+    b[N] = A2
+    for j in range(1, N):
+        u = u1 + du * zeta[j] + 6.0 * (flux[i] / hi) * zeta[j] * (1.0 - zeta[j])
+        delta = gradient * hi * (zeta[j] - 0.5)
+        carry = heat_capacity * abs(u) / dx
+        if u >= 0.0:
+            neighbour = T[i - 1, j]
+        else:
+            neighbour = T[i + 1, j] if i + 1 < n else T[i, j]
+        for c in range(N + 1):
+            A[j, c] = -conductivity / (hi * hi) * D2[j, c]
+        A[j, j] += carry
+        b[j] = (tau_m + delta) * (du / hi + Phi * delta / eta) + carry * neighbour
+    x, ok = solve_dense(A, b)
+    mean = 0.0
+    for j in range(N + 1):
+        mean += weights[j] * x[j]
+    if not ok:
+        mean = math.nan
+    return x, mean
+
+
+@register_jitable
+def layer_sweep(direction, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, heat_capacity, C1, C2, zeta, D, D2,
+                weights, T, q1, q2, tolerance, max_iterations):
+    """One sweep of the cross-film energy equation over the nodes 1..n-1 (``direction`` +1: downstream, -1:
+    upstream), in place on the temperature rises T[i, j] [K] at the film points zeta_j (0 and 1 the
+    surfaces) and the surface heat fluxes q1, q2 [W/m^2]. Returns (largest change of T [K], nodes whose film
+    temperature found no root below :data:`MAX_RISE` or did not converge).
+
+    At node i the film points solve (rho c) |u_j| (T_ij - T_(i -+ 1)j)/dx = (k/h^2) d^2T/dzeta^2 + Q_j
+    (upwind in x by the sign of u_j: the inlet's reverse flow takes the downstream neighbour), the surfaces
+    T_i0 = A_1 + C_1 w_0 q_1, q_1 = (k/h) dT/dzeta(0) and T_iN = A_2 + C_2 w_0 q_2, q_2 = -(k/h) dT/dzeta(1)
+    (Jaeger, A_j the upstream history), all together as one dense (N+1) system with the collocation
+    derivative matrices D, D2 (d/dzeta). Velocity u_j = u1 + du zeta_j + 6 (q_P/h) zeta_j (1 - zeta_j) and
+    dissipation Q_j = (tau_m + delta_j)(du/h + Phi delta_j/eta), delta_j = p' h (zeta_j - 1/2),
+    p' = -12 eta q_P/(Phi h^3), q_P = ``flux`` the node's Poiseuille flux (held), tau_m and Phi from
+    :func:`film_state`, eta = eta_iso exp(-beta Tm) at the film's mean temperature rise Tm: the system is
+    linear for a given Tm, and Tm = mean(T(Tm)) (one root: the dissipation falls as Tm rises) is solved by the
+    Illinois method on a bracket widened from the node's previous mean, to ``tolerance`` [K]. Node 0 (inlet)
+    holds T = 0 where the flow enters and takes its neighbour's temperature where it leaves (reverse flow).
+    """
+    n = h.shape[0]
+    N = zeta.shape[0] - 1
+    w = jaeger_weights(dx, n)
+    c1 = C1 * w[0]
+    c2 = C2 * w[0]
+    A = np.empty((N + 1, N + 1))
+    b = np.empty(N + 1)
+    largest = 0.0
+    failed = 0
+    start = 1 if direction > 0 else n - 1
+    stop = n if direction > 0 else 0
+    for i in range(start, stop, direction):
+        if h[i] <= 0.0:
+            continue
+        A1 = 0.0
+        A2 = 0.0
+        for m in range(1, i):
+            A1 += w[i - m] * q1[m]
+            A2 += w[i - m] * q2[m]
+        A1 *= C1
+        A2 *= C2
+        previous = 0.0
+        for j in range(N + 1):
+            previous += weights[j] * T[i, j]
+        # F(t) = t - mean(T(t)) increases with t: bracket the root from the previous mean, then Illinois
+        low = min(max(previous, -MAX_RISE), MAX_RISE)
+        x, mean = layer_node(i, low, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, heat_capacity, c1, c2,
+                             A1, A2, zeta, D, D2, weights, T, A, b)
+        f_low = low - mean
+        if beta == 0.0 or f_low == 0.0 or not math.isfinite(f_low):
+            T_new = x
+            if not math.isfinite(f_low):
+                failed += 1
+        else:
+            step = abs(f_low) + 1.0
+            high = low
+            f_high = f_low
+            sign = 1.0 if f_low < 0.0 else -1.0  # the root lies above (F < 0) or below
+            while f_high * f_low > 0.0 and abs(high) < MAX_RISE:
+                low, f_low = high, f_high
+                high = min(max(low + sign * step, -MAX_RISE), MAX_RISE)
+                step *= 2.0
+                x, mean = layer_node(i, high, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, heat_capacity,
+                                     c1, c2, A1, A2, zeta, D, D2, weights, T, A, b)
+                f_high = high - mean
+            T_new = x
+            if f_high * f_low > 0.0 or not math.isfinite(f_high):
+                failed += 1  # no root within +-MAX_RISE: kept at the bound
+            else:
+                side = 0
+                for _ in range(max_iterations):
+                    if abs(f_high) <= tolerance or abs(high - low) <= tolerance:
+                        break
+                    t = (low * f_high - high * f_low) / (f_high - f_low)
+                    x, mean = layer_node(i, t, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity,
+                                         heat_capacity, c1, c2, A1, A2, zeta, D, D2, weights, T, A, b)
+                    f_t = t - mean
+                    T_new = x
+                    if f_t * f_high > 0.0:
+                        high, f_high = t, f_t
+                        if side == 1:
+                            f_low *= 0.5
+                        side = 1
+                    else:
+                        low, f_low = t, f_t
+                        if side == -1:
+                            f_high *= 0.5
+                        side = -1
+                    if abs(f_t) <= tolerance:
+                        break
+        for j in range(N + 1):
+            change = abs(T_new[j] - T[i, j])
+            if change > largest:
+                largest = change
+            T[i, j] = T_new[j]
+        d0 = 0.0
+        dN = 0.0
+        for c in range(N + 1):
+            d0 += D[0, c] * T_new[c]
+            dN += D[N, c] * T_new[c]
+        q1[i] = conductivity / h[i] * d0
+        q2[i] = -conductivity / h[i] * dN
+    # the inlet node: zero where the flow enters, the neighbour's temperature where it leaves
+    for j in range(N + 1):
+        T[0, j] = 0.0
+    if h[0] > 0.0:
+        for j in range(1, N):
+            u0 = u1 + du * zeta[j] + 6.0 * (flux[0] / h[0]) * zeta[j] * (1.0 - zeta[j])
+            if u0 < 0.0:
+                T[0, j] = T[1, j]
+    return largest, failed
+
+
+
+
+@register_jitable
+def film_fields(eta, h, flux, du, tau0, tau, phi, Q):
+    """:func:`film_state` at every node, in place on tau [Pa], phi [-] and Q [W/m^2]."""
+    for i in range(h.shape[0]):
+        tau[i], phi[i], Q[i] = film_state(eta[i], h[i], flux[i], du, tau0)
+
+
+PY = {"film_state": film_state, "layer_sweep": layer_sweep, "film_fields": film_fields}
+
+
+def compiled(name: str):
+    """The numba-compiled twin of kernel ``name`` of this module."""
+    return compile_kernel(PY[name])

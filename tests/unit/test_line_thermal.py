@@ -1,0 +1,218 @@
+"""The thermal / non-Newtonian line EHL solver: flow factors through the multigrid kernels, the isothermal Newtonian
+limit, the film's rheology and energy equation against closed forms, the convergence record and loud failures.
+Comparisons with the published thermal factors and the lumped traction model: tests/literature/test_thermal_ehl.py."""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+from camcontact.contact.fluid_traction import film_shear_stress
+from camcontact.ehl import _thermal_kernels
+from camcontact.ehl.line_multigrid import solve_multigrid
+from camcontact.ehl.line_problem import LineEHLProblem
+from camcontact.ehl.line_thermal import ThermalLineContact, _collocation, solve_thermal
+from camcontact.errors import ConvergenceError, ConvergenceWarning, InputError
+
+LEVEL = 6
+
+
+def _contact(S=0.0, u_m=5.0, **changes):
+    """A steel roller pair in mineral oil: R 10 mm, 200 kN/m (p_h 0.85 GPa), eta0 0.04 Pa s, beta 0.03/K."""
+    data = dict(R=0.01, w=2e5, E_reduced=2.26e11, u1=u_m * (1 + S / 2), u2=u_m * (1 - S / 2), eta0=0.04, alpha=2e-8,
+                beta=0.03, conductivity=0.14, heat_capacity=1.74e6, effusivity_1=12900.0, effusivity_2=12900.0)
+    data.update(changes)
+    return ThermalLineContact(**data)
+
+
+# ------------------------------------------------------------------------------ flow factor in the kernels
+def test_a_uniform_flow_factor_is_a_smaller_lambda():
+    """xi = phi rho H^3/(eta lambda) with phi = c everywhere is the problem with lambda/c: M sqrt(c), the same
+    alpha-bar (L c^-1/4) and pressure scale. Both solves give the same discrete solution."""
+    c = 2.5
+    base = LineEHLProblem(M=20.0, L=10.0)
+    scaled = LineEHLProblem(M=20.0 * math.sqrt(c), L=10.0 * c**-0.25, pressure_scale=base.p_h)
+    base = LineEHLProblem(M=20.0, L=10.0, pressure_scale=base.p_h)
+    assert scaled.lam == pytest.approx(base.lam / c, rel=1e-14)
+    assert scaled.alpha_bar == pytest.approx(base.alpha_bar, rel=1e-14)
+    n = base.grid(7).size
+    with_factor = solve_multigrid(base, 7, tolerance=1e-10, flow_factor=np.full(n, c))
+    rescaled = solve_multigrid(scaled, 7, tolerance=1e-10)
+    np.testing.assert_allclose(with_factor.H, rescaled.H, rtol=1e-6)  # measured 2.6e-9 absolute
+    np.testing.assert_allclose(with_factor.P, rescaled.P, atol=2e-6)  # 3.5e-7 at the spike
+    assert with_factor.flow_factor is not None and rescaled.flow_factor is None
+    # the solution's mass flux uses the factor: constant through the pressurised contact
+    flux = with_factor.mass_flux
+    wet = (with_factor.P[:-1] > 0) & (with_factor.P[1:] > 0)
+    assert np.ptp(flux[wet]) < 1e-5 * np.abs(flux[wet]).max()
+
+
+@pytest.mark.parametrize("factor", [np.ones(5), -np.ones(7 * 32 + 1), np.full(7 * 32 + 1, np.nan)])
+def test_flow_factor_is_checked_at_the_door(factor):
+    with pytest.raises(InputError, match="flow_factor"):
+        solve_multigrid(LineEHLProblem(M=20.0, L=10.0), 6, flow_factor=factor)
+
+
+# ------------------------------------------------------------------------------ isothermal Newtonian limit
+def test_isothermal_newtonian_limit_is_the_isothermal_solver():
+    """Neither energy equation nor Eyring stress: phi = 1 and the solution is the isothermal solver's, node for
+    node (the issue's 'H to 1e-6'), after one iteration."""
+    contact = _contact(S=0.5)
+    solution = solve_thermal(contact, LEVEL, thermal=False)
+    reference = solve_multigrid(contact.problem(), LEVEL)
+    np.testing.assert_array_equal(solution.ehl.H, reference.H)
+    assert solution.record.converged and solution.record.cycles == 1
+    assert solution.film_reduction == 1.0
+    np.testing.assert_array_equal(solution.flow_factor, 1.0)
+    np.testing.assert_array_equal(solution.temperature_rise, 0.0)
+    # Newtonian Couette stress eta(p) (u2 - u1)/h at every node
+    eta = contact.eta0 * np.exp(contact.problem().log_viscosity(solution.ehl.P))
+    np.testing.assert_allclose(solution.shear_stress, eta * (contact.u2 - contact.u1) / solution.h, rtol=1e-12)
+
+
+def test_a_temperature_independent_oil_heats_but_keeps_its_film():
+    """beta = 0: the energy equation runs (the film warms) but the viscosity does not follow: phi = 1 and the
+    film is the isothermal one to 1e-6."""
+    solution = solve_thermal(_contact(S=0.5, beta=0.0), LEVEL)
+    assert solution.max_temperature_rise > 1.0
+    np.testing.assert_allclose(solution.ehl.H, solution.isothermal.H, rtol=1e-6)
+
+
+# ------------------------------------------------------------------------------ film rheology
+@pytest.mark.parametrize("eta, h, du", [(0.05, 1e-6, 2.0), (1e4, 3e-7, 0.5), (3e5, 5e-7, 4.0)])
+def test_eyring_film_state_is_the_traction_models_stress(eta, h, du):
+    """tau_m = tau0 asinh(eta du/(tau0 h)) (the Eyring stress of camcontact.contact.fluid_traction), Poiseuille
+    factor cosh(tau_m/tau0) (Conry, Wang & Cusano 1987), dissipation tau_m du + 12 eta q^2/(Phi h^3)."""
+    tau0, flux = 5e6, 2e-7
+    tau, phi, Q = _thermal_kernels.film_state(eta, h, flux, du, tau0)
+    expected, _ = film_shear_stress(np.log(eta * du / h / tau0), "eyring", tau0, None)
+    assert tau == pytest.approx(float(expected), rel=1e-12)
+    assert phi == pytest.approx(math.cosh(tau / tau0), rel=1e-12)
+    assert Q == pytest.approx(tau * du + 12 * eta * flux**2 / (phi * h**3), rel=1e-12)
+    tau_n, phi_n, Q_n = _thermal_kernels.film_state(eta, h, flux, du, 0.0)  # Newtonian
+    assert (tau_n, phi_n) == (pytest.approx(eta * du / h), 1.0)
+    assert Q_n == pytest.approx(eta * du**2 / h + 12 * eta * flux**2 / h**3, rel=1e-12)
+
+
+# ------------------------------------------------------------------------------ energy equation
+def test_collocation_differentiates_and_averages_polynomials_exactly():
+    zeta, D, D2, weights = _collocation(9)
+    f = zeta**5 - 2 * zeta**2
+    np.testing.assert_allclose(D @ f, 5 * zeta**4 - 4 * zeta, atol=1e-11)
+    np.testing.assert_allclose(D2 @ f, 20 * zeta**3 - 4, atol=1e-9)
+    assert weights @ f == pytest.approx(1 / 6 - 2 / 3, abs=1e-14)
+    assert (zeta[0], zeta[-1]) == (0.0, 1.0)
+
+
+def test_jaeger_weights_integrate_a_uniform_band_source():
+    """sum_d w_d over a uniform flux from the band's start is 2 sqrt(x - x0): the surface temperature at the exit
+    of a band of half-width a is 2 q sqrt(2a)/(e sqrt(pi u)) = 1.596 (q/k) sqrt(chi a/u) (Jaeger 1942)."""
+    dx, n = 1e-6, 401
+    w = _thermal_kernels.jaeger_weights(dx, n)
+    assert w.sum() == pytest.approx(2 * math.sqrt((n - 0.5) * dx), rel=1e-12)
+    k, rho_c, u, q = 46.0, 7850.0 * 460.0, 5.0, 1e8
+    a = 0.5 * (n - 0.5) * dx
+    exit_rise = q * w.sum() / (math.sqrt(k * rho_c) * math.sqrt(math.pi * u))
+    assert exit_rise == pytest.approx(1.596 * q / k * math.sqrt(k / rho_c * a / u), rel=1e-3)
+
+
+def _sweep_inputs(n=60, flux=0.0, effusivity=1e12, heat_capacity=1.0):
+    zeta, D, D2, weights = _collocation(9)
+    h = np.full(n, 1e-6)
+    return dict(dx=1e-6, h=h, eta_iso=np.full(n, 0.01), flux=np.full(n, flux), u1=1.0, du=2.0, tau0=0.0, beta=0.0,
+                conductivity=0.1, heat_capacity=heat_capacity, C1=1.0 / (effusivity * math.sqrt(math.pi)),
+                C2=1.0 / (effusivity * math.sqrt(3.0 * math.pi)), zeta=zeta, D=D, D2=D2, weights=weights,
+                T=np.zeros((n, 9)), q1=np.zeros(n), q2=np.zeros(n), tolerance=1e-12, max_iterations=60)
+
+
+def test_couette_film_between_cold_walls_has_the_parabolic_profile():
+    """Fully developed Couette film between walls held at T0 (huge effusivity): T = (eta du^2/(2k)) zeta (1 - zeta),
+    mean rise eta du^2/(12 k), half the heat into each wall."""
+    args = _sweep_inputs()
+    sweep = _thermal_kernels.compiled("layer_sweep")
+    for _ in range(3):
+        sweep(1, *args.values())
+        sweep(-1, *args.values())
+    peak = 0.01 * 2.0**2 / (2 * 0.1)
+    zeta = args["zeta"]
+    np.testing.assert_allclose(args["T"][-1], peak * zeta * (1 - zeta), atol=1e-9 * peak)
+    heat = 0.01 * 2.0**2 / 1e-6
+    assert args["q1"][-1] == pytest.approx(heat / 2, rel=1e-6) and args["q2"][-1] == pytest.approx(heat / 2, rel=1e-6)
+
+
+def test_layer_sweep_twins_agree_with_reverse_flow_and_heated_walls():
+    """Plain-Python and compiled sweeps give the same temperatures on a case with reverse flow (an inlet's
+    Poiseuille flux larger than the Couette one), moving walls that heat up and a temperature-dependent oil."""
+    results = []
+    for kernel in (_thermal_kernels.PY["layer_sweep"], _thermal_kernels.compiled("layer_sweep")):
+        args = _sweep_inputs(n=30, flux=-3e-6, effusivity=1e4, heat_capacity=1.7e6)
+        args.update(beta=0.03, eta_iso=np.linspace(0.05, 5.0, 30), h=np.linspace(3e-6, 1e-6, 30), tolerance=1e-10)
+        for direction in (1, -1, 1, -1):
+            kernel(direction, *args.values())
+        results.append(args["T"].copy())
+    np.testing.assert_allclose(results[0], results[1], rtol=1e-9, atol=1e-12)
+    assert results[0].max() > 0.1 and np.all(np.isfinite(results[0]))
+
+
+# ------------------------------------------------------------------------------ the solver
+def test_thermal_eyring_solve_converges_with_its_record():
+    solution = solve_thermal(_contact(S=0.5, eyring_stress=5e6), LEVEL)
+    record = solution.record
+    assert record.converged and 2 < record.cycles < 40
+    assert record.residuals[-1] <= 1e-3 and record.wall_time > 0 and "level" in record.message
+    assert solution.rheology == "eyring" and solution.thermal
+    assert 0.9 < solution.film_reduction < 1.0 and solution.minimum_film_reduction < solution.film_reduction
+    assert 0.02 < solution.traction_coefficient < 0.05  # sign of u_s = u1 - u2 > 0
+    assert solution.rolling_force > 0.0
+    t1, t2 = solution.max_surface_temperature_rise
+    assert 0 < t1 < solution.max_temperature_rise and 0 < t2 < solution.max_temperature_rise
+    summary = solution.summary()
+    assert summary["converged"] and summary["film reduction [-]"] == solution.film_reduction
+    assert all(np.isfinite(v) for v in summary.values() if isinstance(v, float))
+
+
+def test_nested_iteration_gives_the_films_of_a_single_level():
+    """Level 9 iterates on level 7 first (nested iteration); its films and traction agree with a level-6 solve
+    to discretisation accuracy."""
+    contact = _contact(S=1.0)
+    fine, coarse = solve_thermal(contact, 9), solve_thermal(contact, LEVEL)
+    assert "on level 7" in fine.record.message and "on level 9" in fine.record.message
+    assert fine.film_reduction == pytest.approx(coarse.film_reduction, rel=2e-3)
+    assert fine.traction_coefficient == pytest.approx(coarse.traction_coefficient, rel=5e-3)
+
+
+def test_not_converged_warns_and_strict_raises():
+    contact = _contact(S=0.5, eyring_stress=5e6)
+    with pytest.warns(ConvergenceWarning, match="thermal line EHL did not converge"):
+        solution = solve_thermal(contact, LEVEL, max_iterations=2)
+    assert not solution.record.converged and np.all(np.isfinite(solution.temperature_rise))
+    with pytest.raises(ConvergenceError, match="did not converge"):
+        solve_thermal(contact, LEVEL, max_iterations=2, strict=True)
+
+
+def test_bad_inputs_name_the_field():
+    with pytest.raises(InputError, match="u2 = -1.0"):
+        _contact(u2=-1.0)
+    with pytest.raises(InputError, match="beta"):
+        _contact(beta=-0.01)
+    with pytest.raises(InputError, match="eyring_stress"):
+        solve_thermal(_contact(), LEVEL, non_newtonian=True)
+    with pytest.raises(InputError, match="relaxation"):
+        solve_thermal(_contact(), LEVEL, relaxation=1.5)
+    with pytest.raises(InputError, match="ThermalLineContact"):
+        solve_thermal(_contact().problem(), LEVEL)
+
+
+def test_plot_draws_fields(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    solution = solve_thermal(_contact(S=0.5, eyring_stress=5e6), LEVEL)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        top, bottom = solution.plot()
+    assert len(bottom.get_lines()) == 3 and "µ" in top.get_title()
+    top.figure.savefig(tmp_path / "thermal.png")
