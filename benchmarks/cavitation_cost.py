@@ -18,10 +18,7 @@ Writes ``cavitation_cost.csv`` into ``--out``. Timings are reported, never asser
 
 from __future__ import annotations
 
-import argparse
-import os
-import statistics
-import time
+import sys
 import warnings
 from pathlib import Path
 
@@ -34,6 +31,9 @@ from camcontact.ehl.line_starved import solve_starved, wet_flux
 from camcontact.ehl.line_transient import transient_cycle
 from camcontact.errors import ConvergenceWarning
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # the shared benchmarks/_output.py
+from _output import arguments, timed  # noqa: E402
+
 CASE = dict(M=20.0, L=10.0)
 SUPPLIES = (0.8, 0.4, 0.2)
 
@@ -45,16 +45,6 @@ def flux_spread(solution) -> float:
     if meniscus is not None:
         F = F[solution.X[:-1] > meniscus + 2.0 * (solution.X[1] - solution.X[0])]
     return float(np.ptp(F) / np.mean(F))
-
-
-def timed(run, repeats: int):
-    """(result of the last run, median wall time [s])."""
-    times, result = [], None
-    for _ in range(repeats):
-        start = time.perf_counter()
-        result = run()
-        times.append(time.perf_counter() - start)
-    return result, statistics.median(times)
 
 
 def steady_rows(level: int, repeats: int) -> list[dict]:
@@ -103,11 +93,7 @@ def transient_rows(level: int, repeats: int, steps: int) -> list[dict]:
 
 
 def main(argv=None) -> pd.DataFrame:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="level 6, one repeat, 21 transient steps")
-    parser.add_argument("--repeats", type=int, default=3)
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "results"))
-    args = parser.parse_args(argv)
+    args = arguments(__doc__, "level 6, one repeat, 21 transient steps", argv)
     steady_level, transient_level = (6, 6) if args.quick else (10, 8)
     repeats = 1 if args.quick else args.repeats
     with warnings.catch_warnings():

@@ -27,7 +27,8 @@ import numpy as np
 from numba.extending import register_jitable
 
 from . import _kernels
-from ._kernels import deformation_direct, law_state, mlmi_apply, relax_hybrid, reynolds_residual, wedge_weight
+from ._kernels import (deformation_direct, flow_factor, law_state, mlmi_apply, relax_hybrid, reynolds_residual,
+                       wedge_weight)
 
 __all__ = ["DOWN", "PY", "SOLVE", "UP", "coarse_newton", "compiled", "cycle_schedule", "fas_cycle"]
 
@@ -118,7 +119,7 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, phi, pinned, h, 
                   params, elastic, s, c_t, tolerance, max_iterations):
     """Semi-smooth Newton for the complementarity problem L(P, H0) = f, load = f_load on a small grid
     (film fractions theta given: the injected ones of a mass-conserving solve, else 1; flow factors phi on the
-    Poiseuille coefficient given, 1 for the isothermal Newtonian film; nodes with ``pinned``
+    Poiseuille coefficient given (:func:`camcontact.ehl._kernels.flow_factor`); nodes with ``pinned``
     set are held at P = 0 by the equation P_i = 0 in place of their complementarity condition).
 
     The coarsest-grid solver of the multigrid cycles: the same method as the dense reference
@@ -170,9 +171,10 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, phi, pinned, h, 
             gap = max(H[j], 0.0)
             rho[j] = r * theta[j]
             drho[j] = d_r * theta[j]
-            xi[j] = phi[j] * r * gap * gap * gap * e / lam
-            dxi_dH[j] = 3.0 * phi[j] * r * gap * gap * e / lam
-            dxi_dP[j] = xi[j] * (d_r / r - dlog_eta)
+            factor, share = flow_factor(phi, j, log_eta)
+            xi[j] = factor * r * gap * gap * gap * e / lam
+            dxi_dH[j] = 3.0 * factor * r * gap * gap * e / lam
+            dxi_dP[j] = xi[j] * (d_r / r - (1.0 - share) * dlog_eta)
         for i in range(n):
             for c in range(5):
                 direct[i, c] = 0.0
@@ -334,7 +336,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     coarsest_sweeps, window, correct_pressurised_only, freeze_free_boundary,
     dry_keeps_own_equation). Returns the work done in finest-grid relaxation units.
 
-    ``phi_all`` holds the flow factors per level (the Poiseuille coefficient's factor, all 1 for the isothermal
+    ``phi_all`` holds the flow factors' (a, k) per node and level (shape (total, 2); (1, 0) for the isothermal
     Newtonian film; see :mod:`camcontact.ehl._kernels`), given on every level (the hierarchy restricts the finest
     level's, :meth:`camcontact.ehl.line_multigrid.LineHierarchy.set_flow_factor`).
 

@@ -28,10 +28,15 @@ clipping) operator; :func:`relax_hybrid` with ``update_theta`` solves for theta 
 boundary node upstream (X_a for s > 0, X_b for s < 0) holds the supply: its content is the inlet
 layer (starvation) or a full film.
 
-phi is a per-node flow factor on the Poiseuille coefficient, xi = phi rho H^3/(eta lambda): 1 for the
-isothermal Newtonian film; the thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`)
-puts there the film's viscosity at its temperature and the Eyring flow enhancement, held fixed during a
-solve (the kernels' linearisations treat it as a coefficient).
+phi holds two numbers per node, phi[i] = (a_i, k_i), for the flow factor on the Poiseuille coefficient,
+xi = F rho H^3/(eta lambda) with F = a_i sqrt(1 + (k_i eta-bar(P))^2) (:func:`flow_factor`): (1, 0) for the
+isothermal Newtonian film. The thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`) puts in a
+the film's viscosity at its temperature and in k the Eyring coefficient of the Reynolds–Eyring flow factor
+cosh(tau_m/tau0) = sqrt(1 + Lambda^2), Lambda = k eta-bar: its dependence on the pressure is kept in the
+kernels (with Lambda >> 1 the Poiseuille flow of a sheared Eyring film no longer depends on the viscosity; a
+flow factor frozen at the viscosity of the previous pressure made the Hertz zone of a heavily loaded contact
+behave like a contact of 1000 times its load parameter M, and the multigrid diverged: measured, M = 28,
+L = 14, S = 0.1). a and k are held fixed during a solve.
 
 Importing this module imports numba but compiles nothing.
 """
@@ -338,14 +343,27 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
 
 # ----------------------------------------------------------------------------- EHL operator
 @register_jitable
+def flow_factor(phi, i, log_eta):
+    """(F, s) at node i with ln(eta-bar) = log_eta: the flow factor F = a sqrt(1 + Lambda^2), Lambda = k eta-bar
+    (module docstring) and s = Lambda^2/(1 + Lambda^2) = d ln F / d ln eta-bar."""
+    k = phi[i, 1]
+    if k == 0.0:
+        return phi[i, 0], 0.0
+    lam2 = k * math.exp(log_eta)
+    lam2 *= lam2
+    return phi[i, 0] * math.sqrt(1.0 + lam2), lam2 / (1.0 + lam2)
+
+
+@register_jitable
 def nodal_coefficients(P, H, theta, phi, lam, viscosity_code, density_code, params, rho, xi):
-    """Fill rho (theta times the density ratio: the content factor of the wedge) and xi = phi rho_law H^3 /
-    (eta lambda) (a full film's, phi the node's flow factor) at every node."""
+    """Fill rho (theta times the density ratio: the content factor of the wedge) and xi = F rho_law H^3 /
+    (eta lambda) (a full film's, F the node's flow factor, :func:`flow_factor`) at every node."""
     for i in range(P.shape[0]):
         r = density_ratio(P[i], density_code, params)
         rho[i] = r * theta[i]
         hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
-        xi[i] = phi[i] * r * hi * hi * hi * math.exp(-log_viscosity(P[i], viscosity_code, params)) / lam
+        log_eta = log_viscosity(P[i], viscosity_code, params)
+        xi[i] = flow_factor(phi, i, log_eta)[0] * r * hi * hi * hi * math.exp(-log_eta) / lam
 
 
 @register_jitable
@@ -373,21 +391,22 @@ def law_state(p, viscosity_code, density_code, params):
 
 @register_jitable
 def nodal_laws(P, H, theta, phi, lam, viscosity_code, density_code, params, rho, xi, dlx, drh):
-    """:func:`nodal_coefficients` plus d ln(xi)/dP and d (theta rho)/dP (the flow factor phi held fixed), sharing
-    one log1p and exp per node."""
+    """:func:`nodal_coefficients` plus d ln(xi)/dP and d (theta rho)/dP (a and k of the flow factor held fixed),
+    sharing one log1p and exp per node."""
     for i in range(P.shape[0]):
         p = P[i]
         hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
         if p <= 0.0:
             rho[i] = theta[i]
-            xi[i] = phi[i] * hi * hi * hi / lam
+            xi[i] = flow_factor(phi, i, 0.0)[0] * hi * hi * hi / lam
             dlx[i] = 0.0
             drh[i] = 0.0
             continue
         r, d_r, log_eta, dlog_eta = law_state(p, viscosity_code, density_code, params)
         rho[i] = r * theta[i]
-        xi[i] = phi[i] * r * hi * hi * hi * math.exp(-log_eta) / lam
-        dlx[i] = d_r / r - dlog_eta
+        factor, share = flow_factor(phi, i, log_eta)
+        xi[i] = factor * r * hi * hi * hi * math.exp(-log_eta) / lam
+        dlx[i] = d_r / r - (1.0 - share) * dlog_eta
         drh[i] = d_r * theta[i]
 
 
@@ -518,7 +537,8 @@ def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, para
                     r_m = density_ratio(P[m], density_code, params)
                     rho[m] = r_m * theta[m]
                     hm = max(H[m], 0.0)
-                    xi[m] = phi[m] * r_m * hm * hm * hm * math.exp(-log_viscosity(P[m], viscosity_code, params)) / lam
+                    log_eta = log_viscosity(P[m], viscosity_code, params)
+                    xi[m] = flow_factor(phi, m, log_eta)[0] * r_m * hm * hm * hm * math.exp(-log_eta) / lam
         elif jacobi[i - 1]:
             dipole = diagonal - off_diagonal
             if dipole != 0.0:

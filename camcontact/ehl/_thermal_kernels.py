@@ -67,12 +67,14 @@ MAX_RISE = 1000.0
 
 
 @register_jitable
-def film_state(eta, h, flux, du, tau0):
+def film_state(eta, h, flux, du, tau0, limit):
     """(tau_m [Pa], Phi [-], Q [W/m^2]): mid-plane shear stress, Poiseuille flow factor and dissipation per
     unit area of a film of viscosity eta [Pa s] and thickness h [m] carrying the Poiseuille volume flux
     ``flux`` = -Phi h^3 p'/(12 eta) [m^2/s] at the sliding speed du = u2 - u1 [m/s]; Eyring stress tau0 [Pa]
     (<= 0: Newtonian). Eyring: the Reynolds–Eyring form (s -> 0, module docstring), sinh(tau_m/tau0) =
-    eta du/(tau0 h), Phi = cosh(tau_m/tau0). Q = tau_m du + 12 eta flux^2/(Phi h^3)."""
+    eta du/(tau0 h), Phi = cosh(tau_m/tau0). |tau_m| is bounded by the limiting shear stress ``limit`` [Pa]
+    (inf: none; Bair & Winer 1979, the film then slips in a plane and dissipates limit |du|; its Poiseuille
+    flow keeps the Eyring factor). Q = tau_m du + 12 eta flux^2/(Phi h^3)."""
     if h <= 0.0 or eta <= 0.0:
         return 0.0, 1.0, 0.0
     if tau0 <= 0.0:
@@ -82,6 +84,8 @@ def film_state(eta, h, flux, du, tau0):
         lam = eta * du / (tau0 * h)
         tau_m = tau0 * math.asinh(lam)
         phi = math.sqrt(1.0 + lam * lam)
+    if abs(tau_m) > limit:
+        tau_m = limit if du > 0.0 else -limit
     return tau_m, phi, tau_m * du + 12.0 * eta * flux * flux / (phi * h * h * h)
 
 
@@ -97,15 +101,19 @@ def jaeger_weights(dx, n):
 
 
 @register_jitable
-def layer_node(i, t, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, heat_capacity, c1, c2, A1, A2, zeta, D,
-               D2, weights, T, A, b):
+def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
     """Temperature rises at the film points of node i (returned, with their film mean) for the film viscosity
-    eta_iso[i] exp(-beta t) (t the film's mean temperature rise assumed; see :func:`layer_sweep`)."""
+    eta_iso[i] exp(-beta t) (t the film's mean temperature rise assumed; see :func:`layer_sweep`). ``film`` =
+    (h, eta_iso, flux, limit) per node, ``params`` = (u1, du, tau0, beta, k, rho c, c1, c2) with c_j = C_j w_0,
+    ``collocation`` = (zeta, D, D2, weights); A and b are work arrays."""
+    h, eta_iso, flux, limit = film
+    u1, du, tau0, beta, conductivity, heat_capacity, c1, c2 = params
+    zeta, D, D2, weights = collocation
     N = zeta.shape[0] - 1
     n = h.shape[0]
     hi = h[i]
     eta = eta_iso[i] * math.exp(-beta * t)
-    tau_m, Phi, Q = film_state(eta, hi, flux[i], du, tau0)
+    tau_m, Phi, Q = film_state(eta, hi, flux[i], du, tau0, limit[i])
     gradient = -12.0 * eta * flux[i] / (Phi * hi * hi * hi)
     kh = conductivity / hi
     for r in range(N + 1):
@@ -140,8 +148,8 @@ def layer_node(i, t, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, hea
 
 
 @register_jitable
-def layer_sweep(direction, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, heat_capacity, C1, C2, zeta, D, D2,
-                weights, T, q1, q2, tolerance, max_iterations):
+def layer_sweep(direction, dx, h, eta_iso, flux, limit, u1, du, tau0, beta, conductivity, heat_capacity, C1, C2, zeta,
+                D, D2, weights, T, q1, q2, tolerance, max_iterations):
     """One sweep of the cross-film energy equation over the nodes 1..n-1 (``direction`` +1: downstream, -1:
     upstream), in place on the temperature rises T[i, j] [K] at the film points zeta_j (0 and 1 the
     surfaces) and the surface heat fluxes q1, q2 [W/m^2]. Returns (largest change of T [K], nodes whose film
@@ -154,7 +162,8 @@ def layer_sweep(direction, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivit
     derivative matrices D, D2 (d/dzeta). Velocity u_j = u1 + du zeta_j + 6 (q_P/h) zeta_j (1 - zeta_j) and
     dissipation Q_j = (tau_m + delta_j)(du/h + Phi delta_j/eta), delta_j = p' h (zeta_j - 1/2),
     p' = -12 eta q_P/(Phi h^3), q_P = ``flux`` the node's Poiseuille flux (held), tau_m and Phi from
-    :func:`film_state`, eta = eta_iso exp(-beta Tm) at the film's mean temperature rise Tm: the system is
+    :func:`film_state` (``limit`` the node's limiting shear stress [Pa]), eta = eta_iso exp(-beta Tm) at the
+    film's mean temperature rise Tm: the system is
     linear for a given Tm, and Tm = mean(T(Tm)) (one root: the dissipation falls as Tm rises) is solved by the
     Illinois method on a bracket widened from the node's previous mean, to ``tolerance`` [K]. Node 0 (inlet)
     holds T = 0 where the flow enters and takes its neighbour's temperature where it leaves (reverse flow).
@@ -162,8 +171,9 @@ def layer_sweep(direction, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivit
     n = h.shape[0]
     N = zeta.shape[0] - 1
     w = jaeger_weights(dx, n)
-    c1 = C1 * w[0]
-    c2 = C2 * w[0]
+    film = (h, eta_iso, flux, limit)
+    params = (u1, du, tau0, beta, conductivity, heat_capacity, C1 * w[0], C2 * w[0])
+    collocation = (zeta, D, D2, weights)
     A = np.empty((N + 1, N + 1))
     b = np.empty(N + 1)
     largest = 0.0
@@ -185,8 +195,7 @@ def layer_sweep(direction, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivit
             previous += weights[j] * T[i, j]
         # F(t) = t - mean(T(t)) increases with t: bracket the root from the previous mean, then Illinois
         low = min(max(previous, -MAX_RISE), MAX_RISE)
-        x, mean = layer_node(i, low, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, heat_capacity, c1, c2,
-                             A1, A2, zeta, D, D2, weights, T, A, b)
+        x, mean = layer_node(i, low, dx, film, params, A1, A2, collocation, T, A, b)
         f_low = low - mean
         if beta == 0.0 or f_low == 0.0 or not math.isfinite(f_low):
             T_new = x
@@ -201,8 +210,7 @@ def layer_sweep(direction, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivit
                 low, f_low = high, f_high
                 high = min(max(low + sign * step, -MAX_RISE), MAX_RISE)
                 step *= 2.0
-                x, mean = layer_node(i, high, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity, heat_capacity,
-                                     c1, c2, A1, A2, zeta, D, D2, weights, T, A, b)
+                x, mean = layer_node(i, high, dx, film, params, A1, A2, collocation, T, A, b)
                 f_high = high - mean
             T_new = x
             if f_high * f_low > 0.0 or not math.isfinite(f_high):
@@ -213,8 +221,7 @@ def layer_sweep(direction, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivit
                     if abs(f_high) <= tolerance or abs(high - low) <= tolerance:
                         break
                     t = (low * f_high - high * f_low) / (f_high - f_low)
-                    x, mean = layer_node(i, t, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivity,
-                                         heat_capacity, c1, c2, A1, A2, zeta, D, D2, weights, T, A, b)
+                    x, mean = layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b)
                     f_t = t - mean
                     T_new = x
                     if f_t * f_high > 0.0:
@@ -255,10 +262,10 @@ def layer_sweep(direction, dx, h, eta_iso, flux, u1, du, tau0, beta, conductivit
 
 
 @register_jitable
-def film_fields(eta, h, flux, du, tau0, tau, phi, Q):
+def film_fields(eta, h, flux, limit, du, tau0, tau, phi, Q):
     """:func:`film_state` at every node, in place on tau [Pa], phi [-] and Q [W/m^2]."""
     for i in range(h.shape[0]):
-        tau[i], phi[i], Q[i] = film_state(eta[i], h[i], flux[i], du, tau0)
+        tau[i], phi[i], Q[i] = film_state(eta[i], h[i], flux[i], du, tau0, limit[i])
 
 
 PY = {"film_state": film_state, "layer_sweep": layer_sweep, "film_fields": film_fields}

@@ -178,9 +178,10 @@ class LineHierarchy:
         #: film fractions per level (1: full film); the cycles solve for them on their top level when the
         #: problem's cavitation is mass-conserving
         self.theta_all = np.ones(total)
-        #: flow factors per level (the Poiseuille coefficient's factor; 1: isothermal Newtonian film), set on the
-        #: finest level by :meth:`set_flow_factor` and injected to the coarse ones
-        self.phi_all = np.ones(total)
+        #: flow factors (a, k) per node and level (:func:`camcontact.ehl._kernels.flow_factor`; (1, 0): isothermal
+        #: Newtonian film), set on the finest level by :meth:`set_flow_factor` and restricted to the coarse ones
+        self.phi_all = np.zeros((total, 2))
+        self.phi_all[:, 0] = 1.0
         self.H0s, self.loads = np.zeros(len(levels)), np.zeros(len(levels))
         self.real_settings = np.array([s.omega_gs, s.omega_jacobi, s.switch, s.h0_relaxation])
         self.int_settings = np.array([s.pre_sweeps, s.post_sweeps, s.coarsest_sweeps, s.window,
@@ -201,21 +202,20 @@ class LineHierarchy:
         return self.theta_all[o:o + level.n]
 
     def flow_factor(self, level: _Level) -> np.ndarray:
-        """The flow factors of ``level`` (a view into the cycles' buffer)."""
+        """The flow factors (a, k) of ``level``, shape (n, 2) (a view into the cycles' buffer)."""
         o = int(self.offsets[level.k - 1])
         return self.phi_all[o:o + level.n]
 
-    def set_flow_factor(self, phi: np.ndarray) -> None:
-        """Flow factors ``phi`` of the finest grid; each coarser level takes the full-weighting restriction of
-        ln phi of the level above (injection left the cycles diverging where phi changes by e^5 within a few
-        nodes; measured, see :mod:`camcontact.ehl.line_thermal`). Only the finest grid's factors define the
-        solution; the coarse ones only steer its corrections."""
-        log_phi = np.log(phi)
+    def set_flow_factor(self, factor: np.ndarray, eyring: np.ndarray | None = None) -> None:
+        """Flow factors a = ``factor`` and Eyring coefficients k = ``eyring`` (None: 0) of the finest grid; each
+        coarser level takes the full-weighting restriction of ln a and of k of the level above. Only the finest
+        grid's factors define the solution; the coarse ones only steer its corrections."""
+        values = np.column_stack([np.log(factor), np.zeros(factor.size) if eyring is None else eyring])
         for index in range(len(self.levels) - 1, -1, -1):
-            self.flow_factor(self.levels[index])[:] = np.exp(log_phi)
-            coarse = log_phi[::2].copy()
-            coarse[1:-1] = 0.25 * log_phi[1:-2:2] + 0.5 * log_phi[2:-1:2] + 0.25 * log_phi[3::2]
-            log_phi = coarse
+            self.flow_factor(self.levels[index])[:] = np.column_stack([np.exp(values[:, 0]), values[:, 1]])
+            coarse = values[::2].copy()
+            coarse[1:-1] = 0.25 * values[1:-2:2] + 0.5 * values[2:-1:2] + 0.25 * values[3::2]
+            values = coarse
 
     def watched(self, level: _Level, P: np.ndarray, H: np.ndarray, H0: float) -> tuple[float, ...]:
         """The values whose changes from cycle to cycle decide convergence: (H_min, H0), and with mass-conserving
@@ -304,6 +304,7 @@ def solve_multigrid(
     strict: bool = False,
     compiled: bool = True,
     flow_factor: np.ndarray | None = None,
+    eyring: np.ndarray | None = None,
 ) -> LineEHLSolution:
     """Solve the line-contact problem on ``levels`` grid levels by FAS multigrid.
 
@@ -329,39 +330,46 @@ def solve_multigrid(
         Raise :class:`ConvergenceError` instead of warning when not converged.
     compiled : bool
         Use the numba kernels (False: the plain-Python twins, slow; for tests).
-    flow_factor : array, optional
-        Factor phi > 0 per node of the finest grid on the Poiseuille coefficient, xi = phi rho H^3/(eta lambda)
-        (None: 1, the isothermal Newtonian film); the thermal and non-Newtonian solver
-        (:mod:`camcontact.ehl.line_thermal`) gives the film's viscosity at its temperature and the Eyring flow
-        enhancement through it. Held fixed during the solve; kept on the solution (``flow_factor``). (A full
-        multigrid start solves its start level without the factors; the cycles on the levels above take them.)
+    flow_factor, eyring : array, optional
+        Per node of the finest grid, the factor a > 0 and the Eyring coefficient k >= 0 of the flow factor on
+        the Poiseuille coefficient, xi = a sqrt(1 + (k eta-bar(P))^2) rho H^3/(eta lambda)
+        (:func:`camcontact.ehl._kernels.flow_factor`; None: a = 1, k = 0, the isothermal Newtonian film); the
+        thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`) gives the film's viscosity at its
+        temperature and the Reynolds–Eyring flow enhancement through them. Held fixed during the solve; kept on
+        the solution (``flow_factor``, shape (n, 2)). (A full multigrid start solves its start level without
+        them; the cycles on the levels above take them.)
     """
     if not (isinstance(levels, (int, np.integer)) and 1 <= levels <= 16):
         raise InputError(f"solve_multigrid: levels = {levels!r}; allowed 1..16")
-    if flow_factor is not None:
-        flow_factor = np.asarray(flow_factor, dtype=float)
-        if flow_factor.shape != (grid_points(levels),) or not np.all(np.isfinite(flow_factor) & (flow_factor > 0)):
-            raise InputError(f"solve_multigrid: flow_factor of shape {flow_factor.shape}; allowed: finite values > 0, "
-                             f"one per node of level {levels} ({grid_points(levels)} nodes)")
+    factors = None
+    if flow_factor is not None or eyring is not None:
+        n = grid_points(levels)
+        factors = [np.ones(n) if flow_factor is None else np.asarray(flow_factor, dtype=float),
+                   np.zeros(n) if eyring is None else np.asarray(eyring, dtype=float)]
+        for name, value, low in (("flow_factor", factors[0], 0.0), ("eyring", factors[1], None)):
+            good = np.isfinite(value) & ((value > low) if low is not None else (value >= 0.0))
+            if value.shape != (n,) or not np.all(good):
+                raise InputError(f"solve_multigrid: {name} of shape {value.shape}; allowed: finite values "
+                                 f"{'> 0' if low is not None else '>= 0'}, one per node of level {levels} ({n} nodes)")
     if problem.supply is not None:
         raise InputError(f"solve_multigrid: the problem has a starved inlet (supply = {problem.supply!r}); solve it "
                          "with camcontact.ehl.line_starved.solve_starved, which finds its meniscus")
     settings = settings or MultigridSettings()
     return run_ladder(settings, ROBUST,
-                      lambda attempt: _solve_once(problem, levels, tolerance, attempt, initial, compiled, flow_factor),
+                      lambda attempt: _solve_once(problem, levels, tolerance, attempt, initial, compiled, factors),
                       f"line EHL multigrid (M = {problem.M:.4g}, L = {problem.L:.4g})", strict=strict,
                       size=f"{grid_points(levels)} nodes")
 
 
-def _solve_once(problem, levels, tolerance, settings, initial, compiled, flow_factor=None) -> LineEHLSolution:
+def _solve_once(problem, levels, tolerance, settings, initial, compiled, factors=None) -> LineEHLSolution:
     """One multigrid attempt (see :func:`solve_multigrid`); raises ConvergenceError on divergence."""
     if not (isinstance(levels, (int, np.integer)) and 1 <= levels <= 16):
         raise InputError(f"solve_multigrid: levels = {levels!r}; allowed 1..16")
     settings = settings or MultigridSettings()
     start = time.perf_counter()
     solver = LineHierarchy(problem, int(levels), settings, compiled)
-    if flow_factor is not None:
-        solver.set_flow_factor(flow_factor)
+    if factors is not None:
+        solver.set_flow_factor(*factors)
     finest = solver.levels[-1]
     if initial is not None:
         P = np.maximum(np.interp(finest.X, initial.X, initial.P), 0.0)
@@ -421,8 +429,9 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
     record = _record(solver, residuals, loads, works, start, converged, message, tolerance)
     theta = solver.theta(finest).copy() if solver.mass_conserving else None
     phi = solver.flow_factor(finest)
+    plain = np.all(phi[:, 0] == 1.0) and np.all(phi[:, 1] == 0.0)
     return LineEHLSolution(problem=problem, level=int(levels), X=finest.X, P=P, H=H, H0=float(H0), record=record,
-                           settings=settings, theta=theta, flow_factor=None if np.all(phi == 1.0) else phi.copy())
+                           settings=settings, theta=theta, flow_factor=None if plain else phi.copy())
 
 
 _MAX_START_LEVEL = 6  # the dense start solver stays below ~1 s

@@ -75,9 +75,18 @@ class LineEHLSolution:
     settings: object = attrs.field(default=None, eq=False)
     #: film fraction per node of a mass-conserving solve (None: a full film, the Reynolds cavitation model)
     theta: np.ndarray | None = attrs.field(default=None, repr=False, eq=False)
-    #: flow factor per node on the Poiseuille coefficient (None: 1, the isothermal Newtonian film; see
-    #: :func:`camcontact.ehl.line_multigrid.solve_multigrid`)
+    #: flow factors (a, k) per node, shape (n, 2), of the Poiseuille coefficient (None: (1, 0), the isothermal
+    #: Newtonian film; see :func:`camcontact.ehl.line_multigrid.solve_multigrid`)
     flow_factor: np.ndarray | None = attrs.field(default=None, repr=False, eq=False)
+
+    @property
+    def poiseuille_factor(self) -> np.ndarray:
+        """F = a sqrt(1 + (k eta-bar(P))^2) [-] per node: the factor on the Poiseuille coefficient (1 isothermal
+        Newtonian; :func:`camcontact.ehl._kernels.flow_factor`)."""
+        if self.flow_factor is None:
+            return np.ones_like(self.P)
+        a, k = self.flow_factor[:, 0], self.flow_factor[:, 1]
+        return a * np.sqrt(1.0 + (k * np.exp(self.problem.log_viscosity(self.P))) ** 2)
 
     @property
     def film_fraction(self) -> np.ndarray:
@@ -112,7 +121,7 @@ class LineEHLSolution:
         q = self.content
         xi = problem.flow_coefficient(P, H)
         if self.flow_factor is not None:
-            xi = xi * self.flow_factor
+            xi = xi * self.poiseuille_factor
         full = (P > 0.0) | (self.film_fraction >= 1.0)
         phi = np.where(full[:-2], 0.5, 0.0)  # limiter of faces 1..n-2: the upstream node (kernels' wedge_weight)
         G = np.empty(P.size - 1)

@@ -1,19 +1,24 @@
 """Thermal and non-Newtonian (Eyring) steady line-contact EHL: the multigrid solver with an energy equation.
 
 The isothermal Newtonian solver (:func:`camcontact.ehl.line_multigrid.solve_multigrid`) solves the Reynolds
-equation with a flow factor phi per node on its Poiseuille coefficient, xi = phi rho H^3/(eta lambda)
-(1: isothermal Newtonian). This module supplies phi from the film's rheology and temperature, in a
-fixed-point iteration around that solver:
+equation with a flow factor per node on its Poiseuille coefficient, xi = F rho H^3/(eta lambda),
+F = a sqrt(1 + (k eta-bar(P))^2) (a = 1, k = 0: isothermal Newtonian; :func:`camcontact.ehl._kernels.flow_factor`).
+This module supplies a (the film's viscosity at its temperature, exp(beta dT)) and k (the Eyring coefficient,
+eta0 exp(-beta dT) |u2 - u1|/(tau0 h)) from the film's rheology and temperature, in a fixed-point iteration
+around that solver:
 
 1. solve the Reynolds and film equations with phi (warm-started from the previous solution);
 2. from the pressure and film, solve the energy equation in the film and the surfaces
    (:func:`camcontact.ehl._thermal_kernels.layer_sweep`: the temperature at nine points across the film along
    x, with the film's velocity profile and its reverse flow in the inlet; the surfaces as moving half-spaces),
    with the viscosity eta(p, T) = eta(p, T0) exp(-beta (Tm - T0)) at the film's mean temperature Tm;
-3. phi_new = Phi exp(beta (Tm - T0)), Phi the Eyring film's Poiseuille flow factor (1 Newtonian); the next
-   ln phi by Anderson mixing (Walker & Ni 2011) of the iterates; stop when the mean of |ln phi_new - ln phi|
-   over the wet nodes (inlet to the last pressurised node) is below ``flow_tolerance`` and the films and the
-   traction have settled (or its largest value is below the tolerance too).
+3. the new (ln a, ln k) from the temperatures and the film; the next ones by Anderson mixing (Walker & Ni 2011)
+   of the iterates; stop when the mean of |ln F_new - ln F| (F = Phi exp(beta (Tm - T0)), Phi the Eyring film's
+   Poiseuille flow factor, at the current pressure) over the wet nodes (inlet to the last pressurised node) is
+   below ``flow_tolerance`` and the films and the traction have settled (or its largest value is below the
+   tolerance too). The Eyring factor's dependence on the pressure (through eta-bar) stays in the kernels: frozen
+   per node, it turned the Hertz zone of a heavily loaded contact into one of 1000 times its load parameter M
+   and the multigrid diverged (measured: M = 28, L = 14, S = 0.1).
 
 Levels above :data:`NESTED_FROM` iterate on coarser levels first (nested iteration). A multigrid solve that fails
 with the mixed flow factors is retried with shorter plain steps; the record says what happened.
@@ -125,7 +130,7 @@ class ThermalLineContact:
     eta0 : float
         Viscosity at ambient pressure and the inlet temperature T0 [Pa s].
     alpha : float
-        Pressure–viscosity coefficient [1/Pa].
+        Pressure–viscosity coefficient [1/Pa] (0: isoviscous).
     beta : float
         Temperature–viscosity coefficient -d ln(eta)/dT [1/K] (0: the viscosity does not depend on temperature).
     conductivity : float
@@ -136,7 +141,10 @@ class ThermalLineContact:
         sqrt(k rho c) of the two surfaces [W s^0.5/(m^2 K)] (:meth:`camcontact.Material.thermal_effusivity`).
     eyring_stress : float, optional
         Eyring stress tau0 [Pa] of the non-Newtonian film (None: Newtonian).
-    viscosity, density, z, p0, domain
+    limiting_shear_stress, limiting_shear_slope : float
+        Limiting shear stress tau_L = tau_L0 + Lambda_L p of the film (Bair & Winer 1979) [Pa], [-]; the slope
+        None (default): no limit. As the traction models of :mod:`camcontact.models.traction_fluid`.
+    viscosity, density, z, p0, domain, elastic
         As :meth:`camcontact.ehl.line_problem.LineEHLProblem.from_contact` (Roelands index z: from eta0 and
         alpha when None).
     """
@@ -147,18 +155,21 @@ class ThermalLineContact:
     u1: float = attrs.field(validator=_positive)
     u2: float = attrs.field(validator=_positive)
     eta0: float = attrs.field(validator=_positive)
-    alpha: float = attrs.field(validator=_positive)
+    alpha: float = attrs.field(validator=_non_negative)
     beta: float = attrs.field(validator=_non_negative)
     conductivity: float = attrs.field(validator=_positive)
     heat_capacity: float = attrs.field(validator=_positive)
     effusivity_1: float = attrs.field(validator=_positive)
     effusivity_2: float = attrs.field(validator=_positive)
     eyring_stress: float | None = attrs.field(default=None, validator=_optional_positive)
+    limiting_shear_stress: float = attrs.field(default=0.0, validator=_non_negative)
+    limiting_shear_slope: float | None = attrs.field(default=None, validator=_optional_positive)
     viscosity: str = "roelands"
     density: str = "dowson_higginson"
     z: float | None = None
     p0: float = ROELANDS_P0
     domain: tuple = (-4.0, 1.5)
+    elastic: bool = True
 
     @property
     def u_m(self) -> float:
@@ -179,7 +190,8 @@ class ThermalLineContact:
         """The dimensionless isothermal problem of the contact (:meth:`LineEHLProblem.from_contact`)."""
         return LineEHLProblem.from_contact(R=self.R, w=self.w, E_reduced=self.E_reduced, u_m=self.u_m, eta0=self.eta0,
                                            alpha=self.alpha, z=self.z, viscosity=self.viscosity,
-                                           density=self.density, p0=self.p0, domain=self.domain)
+                                           density=self.density, p0=self.p0, domain=self.domain,
+                                           elastic=self.elastic)
 
 
 @attrs.frozen
@@ -260,6 +272,11 @@ class ThermalLineSolution:
         """Largest surface temperature rises (surface 1, surface 2) over the wet film [K]."""
         return (float(self.surface_temperature_rise_1[self.wet].max()),
                 float(self.surface_temperature_rise_2[self.wet].max()))
+
+    def traction_profile(self):
+        """The pressure and film of the solution for the lumped traction model
+        (:meth:`camcontact.ehl.line_solution.LineEHLSolution.traction_profile`)."""
+        return self.ehl.traction_profile()
 
     def summary(self) -> dict:
         """The decision values with units in their names."""
@@ -357,8 +374,9 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
     h = np.maximum(solution.H, 0.0) * h_scale
     dp = np.gradient(P, X) * (p_h / b)
     eta_iso = contact.eta0 * np.exp(problem.log_viscosity(P))
-    factor = np.ones(n) if solution.flow_factor is None else solution.flow_factor
-    flux = -factor * h**3 * dp / (12.0 * eta_iso)  # Poiseuille volume flux in +x the solver carries [m^2/s]
+    limit = (np.full(n, np.inf) if contact.limiting_shear_slope is None
+             else contact.limiting_shear_stress + contact.limiting_shear_slope * P * p_h)
+    flux = -solution.poiseuille_factor * h**3 * dp / (12.0 * eta_iso)  # Poiseuille flux in +x the solver carries
     pressurised = np.flatnonzero(P > 0.0)
     last = int(pressurised[-1]) + 1 if pressurised.size else n - 1
     wet = np.arange(n) <= min(last, n - 1)
@@ -382,7 +400,8 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
         C1 = 1.0 / (contact.effusivity_1 * math.sqrt(math.pi * contact.u1))
         C2 = 1.0 / (contact.effusivity_2 * math.sqrt(math.pi * contact.u2))
         args = (dx, np.ascontiguousarray(h[coarse]), np.ascontiguousarray(eta_iso[coarse]),
-                np.ascontiguousarray(flux[coarse]), contact.u1, du, tau0, contact.beta, contact.conductivity,
+                np.ascontiguousarray(flux[coarse]), np.ascontiguousarray(limit[coarse]), contact.u1, du, tau0,
+                contact.beta, contact.conductivity,
                 contact.heat_capacity, C1, C2, zeta, D, D2, weights, T, q1, q2, NODE_TOLERANCE, NODE_ITERATIONS)
         for _ in range(LAYER_SWEEPS):
             down, bad_down = kernels["layer_sweep"](1, *args)
@@ -402,8 +421,13 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
         T2 = np.interp(X, Xe, T[:, -1])
     beta = contact.beta if thermal else 0.0
     tau, phi, Q = np.empty(n), np.empty(n), np.empty(n)
-    kernels["film_fields"](eta_iso * np.exp(-beta * Tm), h, flux, du, tau0, tau, phi, Q)
-    return {"Tm": Tm, "T1": T1, "T2": T2, "tau": tau, "phi": phi * np.exp(beta * Tm), "Q": Q, "x": X * b,
+    kernels["film_fields"](eta_iso * np.exp(-beta * Tm), h, flux, limit, du, tau0, tau, phi, Q)
+    # the solver's parameters of the flow factor F = a sqrt(1 + (k eta-bar)^2): a = exp(beta dT), and the Eyring
+    # coefficient k = eta0 exp(-beta dT) |u2 - u1|/(tau0 h) of Lambda = k eta-bar (0: Newtonian)
+    a = np.exp(beta * Tm)
+    k = (contact.eta0 / a * abs(du) / (tau0 * np.maximum(h, 1e-300)) if tau0 > 0.0 and du != 0.0
+         else np.zeros(n))
+    return {"Tm": Tm, "T1": T1, "T2": T2, "tau": tau, "phi": phi * a, "a": a, "k": k, "Q": Q, "x": X * b,
             "p": P * p_h, "h": h, "wet": wet, "failed": failed, "unsettled": unsettled,
             "failure": failure if failed or unsettled else ""}
 
@@ -476,7 +500,8 @@ def solve_thermal(
         solution = isothermal
     else:
         solution = solve_multigrid(problem, stages[0], tolerance=tolerance, strict=strict, compiled=compiled)
-    log_phi = np.zeros(solution.X.size)
+    eyring = non_newtonian and contact.u1 != contact.u2  # a sheared Eyring film: its flow factor has k > 0
+    x = None  # the iteration's variables: ln a (and ln k) per node
     changes: list[float] = []
     loads: list[float] = []
     works: list[float] = []
@@ -485,13 +510,20 @@ def solve_thermal(
     halvings = 0
     stalled = None
 
-    def solve(level, log_phi, initial):
-        """(solution, work, failure) of the multigrid solve with flow factors exp(log_phi)."""
+    def variables(fields) -> np.ndarray:
+        """ln a (and ln k) per node of the fields' flow-factor parameters."""
+        parts = [np.log(fields["a"])] + ([np.log(np.maximum(fields["k"], 1e-300))] if eyring else [])
+        return np.concatenate(parts)
+
+    def solve(level, x, initial):
+        """(solution, work, failure) of the multigrid solve with the flow-factor parameters of ``x``."""
+        n = problem.grid(level).size
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", ConvergenceWarning)
                 attempt = solve_multigrid(problem, level, tolerance=tolerance, initial=initial,
-                                          flow_factor=np.exp(log_phi), compiled=compiled)
+                                          flow_factor=np.exp(x[:n]), eyring=np.exp(x[n:]) if eyring else None,
+                                          compiled=compiled)
         except ConvergenceError as exc:
             return None, 0.0, str(exc)
         cost = attempt.record.work_units[-1] if attempt.record.work_units else 0.0
@@ -499,8 +531,10 @@ def solve_thermal(
 
     for stage, level in enumerate(stages):
         if stage:  # nested iteration: the flow factors of the level below, interpolated, and a warm start
-            log_phi = np.interp(problem.grid(level), solution.X, log_phi)
-            attempt, cost, failure = solve(level, log_phi, solution)
+            below = solution.X.size
+            x = np.concatenate([np.interp(problem.grid(level), solution.X, part)
+                                for part in np.split(x, len(x) // below)])
+            attempt, cost, failure = solve(level, x, solution)
             work += cost
             if failure is not None:
                 stalled = f"the solve on level {level} from level {stages[stage - 1]} failed: {failure[:200]}"
@@ -512,9 +546,13 @@ def solve_thermal(
         first = len(changes)
         for _ in range(max_iterations):
             fields = _layers(contact, solution, thermal, tau0, state, kernels)
-            target = np.log(fields["phi"])
+            target = variables(fields)
+            if x is None:  # the isothermal start: the Eyring coefficients of its film to begin with
+                x = target.copy()
+                x[:solution.X.size] = 0.0
             wet = fields["wet"]
-            difference = np.abs(target[wet] - log_phi[wet])
+            # the flow factor the film wants against the one its solution was solved with, at its pressure
+            difference = np.abs(np.log(fields["phi"][wet]) - np.log(solution.poiseuille_factor[wet]))
             change, largest = float(np.mean(difference)), float(np.max(difference))
             changes.append(change)
             watched = np.array([solution.H_c, solution.H_min,
@@ -532,11 +570,11 @@ def solve_thermal(
                     converged = True
                     break
                 continue  # the flow factors have settled, the temperatures not yet: more sweeps, same solution
-            residual = target - log_phi
-            proposal = _anderson(history, log_phi, residual, relaxation)
+            residual = target - x
+            proposal = _anderson(history, x, residual, relaxation)
             step = 1.0
             while True:  # a step whose multigrid solve fails is halved (down to MIN_STEP), without the mixing
-                trial = proposal if step == 1.0 else log_phi + step * relaxation * residual
+                trial = proposal if step == 1.0 else x + step * relaxation * residual
                 attempt, cost, failure = solve(level, trial, solution)
                 work += cost
                 if failure is None:
@@ -551,7 +589,7 @@ def solve_thermal(
             if step < 1.0:
                 halvings += 1
                 history.clear()
-            log_phi, solution = trial, attempt
+            x, solution = trial, attempt
         per_stage.append(f"{len(changes) - first} on level {level}")
         if stalled:
             break

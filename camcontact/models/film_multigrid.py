@@ -73,6 +73,16 @@ class Multigrid(FilmModel):
         arcs, each warm-started angle by angle (the compiled kernels release the GIL, so two
         threads nearly halve a cycle on two cores). None: the CPU count, at most 4. The films
         of different thread counts agree within ``tolerance`` (each arc starts cold).
+    thermal, non_newtonian : bool
+        Solve the energy equation of the film and the surfaces / an Eyring film (switched on by a line-contact
+        scene with the effects ``thermal`` / ``non_newtonian``): the thermal and non-Newtonian solver
+        :func:`camcontact.ehl.line_thermal.solve_thermal`, whose films replace the isothermal ones (no formula
+        factor on top) and whose traction the scene's friction takes. Needs the surface speeds u1, u2 > 0 and,
+        thermal, the lubricant's conductivity, density, specific heat and temperature–viscosity coefficient and
+        the surfaces' effusivities.
+    eyring_stress, limiting_shear_stress, limiting_shear_slope : float
+        The film's Eyring stress tau0 [Pa] (non-Newtonian) and limiting shear stress tau_L0 [Pa] + Lambda_L p
+        (slope None: none); the scene takes them from its traction model.
     cavitation : str
         ``"reynolds"`` (default: cavitation by clipping, a full film everywhere) or ``"mass_conserving"``
         (Jakobsson–Floberg–Olsson film fraction, :mod:`camcontact.ehl.line_multigrid`): steady films are the
@@ -89,10 +99,13 @@ class Multigrid(FilmModel):
     reference = "Venner & Lubrecht (2000) Multilevel Methods in Lubrication; Tsuha (2015) §5.3, Table 5.1"
     geometry = "line"
     requires = (*LINE_INPUTS, "lubricant_state", "density_law")
-    #: a starved inlet's lubricant layer [m] (``LineContact.oil_layer``), when the scene gives one
-    optional_requires = ("oil_layer",)
+    #: a starved inlet's lubricant layer [m] (``LineContact.oil_layer``), when the scene gives one; the surface
+    #: speeds [m/s] and effusivities of the thermal and non-Newtonian solve
+    optional_requires = ("oil_layer", "u1", "u2", "effusivity")
     provides = ("h_c", "h_min")
     can_disable = ("piezoviscosity", "elasticity")
+    #: effects a line-contact scene switches on in this model (:func:`camcontact.steps.film.resolve_film_model`)
+    can_enable = ("thermal", "non_newtonian")
 
     levels: int = 9
     tolerance: float = 1e-7
@@ -102,6 +115,11 @@ class Multigrid(FilmModel):
     elasticity: bool = True
     threads: int | None = attrs.field(default=None)
     cavitation: str = attrs.field(default="reynolds")
+    thermal: bool = False
+    non_newtonian: bool = False
+    eyring_stress: float | None = None
+    limiting_shear_stress: float = 0.0
+    limiting_shear_slope: float | None = None
 
     @cavitation.validator
     def _check_cavitation(self, attribute, value):
@@ -135,7 +153,7 @@ class Multigrid(FilmModel):
         return attrs.evolve(first, domain=tuple(domain), cavitation=self.cavitation)
 
     def evaluate(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson",
-                 initial=None, oil_layer=None):
+                 initial=None, oil_layer=None, u1=None, u2=None, effusivity=None):
         """Films [m] from the numerical solution, with the solution and its convergence record.
 
         ``initial`` (a previous :class:`~camcontact.ehl.line_solution.LineEHLSolution`, e.g. of the
@@ -143,11 +161,19 @@ class Multigrid(FilmModel):
         pressures are interpolated onto this problem's grid (the automatic domain may differ).
         ``oil_layer`` [m]: a starved inlet's lubricant layer (both surfaces), solved with mass-conserving
         cavitation by :func:`camcontact.ehl.line_starved.solve_starved` (its content h_oil R/b^2 is the
-        problem's ``supply``); a layer that the flooded contact could not pass leaves it flooded.
+        problem's ``supply``); a layer that the flooded contact could not pass leaves it flooded. With ``thermal`` /
+        ``non_newtonian``: the thermal and non-Newtonian solve (class docstring) from the surface speeds u1, u2
+        [m/s] and the surfaces' ``effusivity`` (a pair [W s^0.5/(m^2 K)]), also giving the isothermal films
+        ``h_c_isothermal``, ``h_min_isothermal``; ``initial`` is not used there.
         """
         from ..ehl.line_multigrid import solve_multigrid
 
         problem = self.problem(R, w, E_reduced, u_m, eta0, alpha, lubricant_state, density_law)
+        if self.thermal or self.non_newtonian:
+            if oil_layer is not None:
+                raise InputError("film model 'multigrid': a starved inlet (oil_layer) with the thermal or "
+                                 "non-Newtonian solver is not supported; leave out the oil layer or those effects")
+            return self._thermal_films(problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity)
         if oil_layer is not None:
             from ..ehl.line_starved import solve_starved
 
@@ -161,4 +187,46 @@ class Multigrid(FilmModel):
                                        initial=initial)
         values = solution.dimensional(R, w, E_reduced)
         return {"h_c": values["h_c"], "h_min": values["h_min"], "ehl_solution": solution,
+                "convergence": solution.record, "M": problem.M, "L": problem.L}
+
+    def _thermal_films(self, problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity) -> dict:
+        """Films [m] of the thermal and/or non-Newtonian solve (:func:`camcontact.ehl.line_thermal.solve_thermal`)
+        with its isothermal Newtonian films and the solution."""
+        from ..ehl.line_thermal import ThermalLineContact, solve_thermal
+
+        if u1 is None or u2 is None or not (u1 > 0 and u2 > 0):
+            raise InputError(f"film model 'multigrid' with the thermal / non-Newtonian solver needs both surface "
+                             f"speeds > 0 (u1 = {u1!r}, u2 = {u2!r} m/s): the surfaces must move through the contact "
+                             "in the same direction")
+        data = {"thermal_conductivity": getattr(lubricant_state, "thermal_conductivity", None),
+                "thermoviscous_coefficient": getattr(lubricant_state, "thermoviscous_coefficient", None),
+                "density": getattr(lubricant_state, "density", None),
+                "specific_heat": getattr(lubricant_state, "specific_heat", None), "effusivity": effusivity}
+        if self.thermal:
+            missing = [name for name, value in data.items() if value is None]
+            if missing:
+                raise InputError("film model 'multigrid' with the thermal effect needs the lubricant's "
+                                 "thermal_conductivity, density, specific_heat and temperature-dependent viscosity "
+                                 "(thermoviscous_coefficient) and both materials' thermal data (effusivity); "
+                                 f"missing: {', '.join(missing)}")
+        else:  # not used without the energy equation
+            data = {"thermal_conductivity": 1.0, "thermoviscous_coefficient": 0.0, "density": 1.0,
+                    "specific_heat": 1.0, "effusivity": (1.0, 1.0)}
+        if self.non_newtonian and self.eyring_stress is None:
+            raise InputError("film model 'multigrid' with the non_newtonian effect needs the Eyring stress "
+                             "(the lubricant's eyring_stress, or an Eyring traction model)")
+        contact = ThermalLineContact(
+            R=R, w=w, E_reduced=E_reduced, u1=float(u1), u2=float(u2), eta0=eta0, alpha=float(alpha),
+            beta=float(data["thermoviscous_coefficient"]), conductivity=float(data["thermal_conductivity"]),
+            heat_capacity=float(data["density"]) * float(data["specific_heat"]),
+            effusivity_1=float(data["effusivity"][0]), effusivity_2=float(data["effusivity"][1]),
+            eyring_stress=self.eyring_stress if self.non_newtonian else None,
+            limiting_shear_stress=self.limiting_shear_stress, limiting_shear_slope=self.limiting_shear_slope,
+            viscosity=problem.viscosity, density=problem.density, z=problem.z, p0=problem.p0, domain=problem.domain,
+            elastic=problem.elastic)
+        solution = solve_thermal(contact, self.levels, thermal=self.thermal, non_newtonian=self.non_newtonian,
+                                 tolerance=self.tolerance, strict=self.strict)
+        scale = solution.scales["h_scale"]
+        return {"h_c": solution.h_c, "h_min": solution.h_min, "h_c_isothermal": solution.isothermal.H_c * scale,
+                "h_min_isothermal": solution.isothermal.H_min * scale, "ehl_solution": solution,
                 "convergence": solution.record, "M": problem.M, "L": problem.L}

@@ -31,6 +31,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+import attrs
+
 from ..components.line_contact import LineContact
 from ..errors import InputError
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
@@ -40,7 +42,7 @@ from ..steps.ehl_friction import (EHL_EFFECTS, MIXED_FRICTION_READS, contact_ehl
                                   fluid_traction_model, mixed_contact)
 from ..steps.film import (composite_roughness_step, ehl_groups, film_parameter, films_of, inlet_thermal_correction,
                           isothermal_films, line_film, lubrication_regime_step, model_name, model_reads,
-                          resolve_film_model, thermal_films)
+                          resolve_film_model, solved_films, solved_thermal_films, thermal_films)
 from ..steps.kinematics import surface_kinematics
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import line_subsurface_stresses
@@ -92,21 +94,29 @@ def line_contact_inputs(contact: LineContact, effects: frozenset) -> dict[str, A
 
 def film_steps(film_model: Any, thermal: bool) -> list[Step]:
     """EHL groups, the film by ``film_model`` (with the further state names it reads), its thermal
-    correction and Lambda per film."""
+    correction and Lambda per film. A model that solves the thermal or non-Newtonian film itself (the
+    ``multigrid`` model switched on by :func:`camcontact.steps.film.resolve_film_model`) gives the films of its
+    solution, with its numerical thermal factor in place of the formula's."""
     films = films_of(film_model)
     isothermal = tuple(f"{q}_isothermal" for q in films)
     basis = "h_min" if "h_min" in films else "h_c"
     reads = model_reads(film_model)
+    solved_thermal = getattr(film_model, "thermal", False) is True
+    solved = solved_thermal or getattr(film_model, "non_newtonian", False) is True
+    if solved:
+        thickness = Step.of(solved_thermal_films if solved_thermal else solved_films)
+    else:
+        thickness = Step.of(thermal_films if thermal else isothermal_films, extra=isothermal, provides=films)
     steps = [
         Step.of(ehl_groups),
         Step.of(line_film, provides=(*isothermal, "film_validity", "film_valid", "film_solution"), extra=reads.required,
                 optional=reads.optional),
-        Step.of(thermal_films if thermal else isothermal_films, extra=isothermal, provides=films),
+        thickness,
         *(Step.of(film_parameter, name="lambda" if q == basis else f"lambda_{q[2:]}",
                   rename={"h": q, "Lambda": f"Lambda_{q[2:]}"}) for q in films),
         Step.of(lubrication_regime_step, rename={"Lambda": f"Lambda_{basis[2:]}"}),
     ]
-    return steps + ([Step.of(inlet_thermal_correction)] if thermal else [])
+    return steps + ([Step.of(inlet_thermal_correction)] if thermal and not solved_thermal else [])
 
 
 def friction_steps(effects: frozenset, thermal_traction: bool) -> list[Step]:
@@ -127,7 +137,14 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
     approach = models.get("approach", "hamrock")
     if approach not in APPROACHES:
         raise InputError(f"line_contact scene: approach model {approach!r} unknown; choose 'hamrock' or 'palmgren'")
-    film_model = resolve_film_model(models.get("film", DEFAULT_FILM), effects=effects)
+    traction = fluid_traction_model(contact.lubricant, effects, models.get("traction"))
+    film_model = resolve_film_model(models.get("film", DEFAULT_FILM), effects=effects,
+                                    enable=("thermal", "non_newtonian"))
+    if getattr(film_model, "non_newtonian", False) is True:  # the film's rheology is the traction model's
+        eyring = getattr(traction, "eyring_stress", None)  # none: a Newtonian traction model was asked for
+        film_model = attrs.evolve(film_model, non_newtonian=eyring is not None, eyring_stress=eyring,
+                                  limiting_shear_stress=getattr(traction, "limiting_shear_stress", 0.0) or 0.0,
+                                  limiting_shear_slope=getattr(traction, "limiting_shear_slope", None))
     if contact.oil_layer is not None and "oil_layer" not in getattr(film_model, "optional_requires", ()):
         raise InputError(f"LineContact {contact.name!r}: oil_layer = {format_quantity(contact.oil_layer)} (a starved "
                          f"inlet) needs the film model 'multigrid', not {model_name(film_model)!r}: the film formulas "
@@ -135,7 +152,6 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
     steps = [Step.of(line_geometry), Step.of(surface_kinematics), Step.of(line_hertz), Step.of(APPROACHES[approach]),
              Step.of(line_subsurface_stresses), Step.of(composite_roughness_step),
              lubricant_step(contact.lubricant, contact.si.temperature), *film_steps(film_model, "thermal" in effects)]
-    traction = fluid_traction_model(contact.lubricant, effects, models.get("traction"))
     asked = (MIXED_OUTPUTS if "mixed" in effects else ()) + (FRICTION_OUTPUTS if effects & EHL_EFFECTS else ())
     bodies = (contact.body1, contact.body2)
     friction = ehl_friction_inputs(contact.lubricant, tuple(b.material for b in bodies),

@@ -169,7 +169,21 @@ def _on_numerical_pressure(traction_model, fluid, usable, solutions, p_h, b, h, 
         one = contact.solve(u_s[i])
         for name, values in fields.items():
             values[i] = getattr(one, name)
+        solved = _solved_traction(traction_model, solutions[i], inputs)
+        if solved is not None:
+            fields["coefficient"][i], fields["temperature_rise"][i] = solved
     return type(fluid)(**fields)
+
+
+def _solved_traction(traction_model, solution, inputs) -> tuple[float, float] | None:
+    """(mu, film temperature rise [K]) of a film solution that computed its own traction with the traction model's
+    rheology — the thermal / non-Newtonian line solver (:class:`camcontact.ehl.line_thermal.ThermalLineSolution`,
+    whose film model the scene gave the traction model's Eyring and limiting shear stresses) — else None; not
+    with a mixed film (the fluid there carries part of the load on a thinner film than the solution's)."""
+    coefficient = getattr(solution, "traction_coefficient", None)
+    if coefficient is None or "h_c_mixed" in inputs or getattr(traction_model, "rheology", None) != solution.rheology:
+        return None
+    return coefficient, solution.max_temperature_rise if solution.thermal else 0.0
 
 
 @step("friction", provides=("friction_force", "friction_coefficient", "friction_power", "fluid_traction_coefficient",
@@ -185,7 +199,8 @@ def ehl_sliding_friction(traction_model, normal_force, p_h, b, h_c, u_s, u_m, lu
 
     The fluid's shear stress is integrated over the Hertz pressure with the central film, or — at the angles
     where the film model left a numerical line solution (``film="multigrid"``) — over that solution's pressure
-    and film (the film scaled to the scene's h_c: its thermal or mixed reduction)."""
+    and film (the film scaled to the scene's h_c: its thermal or mixed reduction). Where that solution is the
+    thermal / non-Newtonian solver's, its own traction and film temperature are taken (:func:`_solved_traction`)."""
     h = _traction_film(h_c, inputs)
     contact, usable = _fluid(traction_model, p_h, b, h, u_m, lubricant_state, inputs)
     fluid = contact.solve(np.where(usable, u_s, 0.0))

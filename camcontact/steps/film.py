@@ -35,7 +35,7 @@ __all__ = [
     "ehl_groups", "film_parameter", "films_of", "inlet_thermal_correction", "isothermal_films", "line_film", "point_film",
     "lubrication_regime_step", "model_reads", "raceway_lambda_steps", "raceway_roughness", "resolve_film_model",
     "roller_films", "roller_thermal_films",
-    "thermal_films",
+    "solved_films", "solved_thermal_films", "thermal_films",
 ]
 
 #: the film thicknesses a film model may give: central and minimum [m]
@@ -49,14 +49,16 @@ def films_of(model: Any) -> tuple[str, ...]:
 
 
 def resolve_film_model(spec: Any, *, geometry: str = "line", effects: Iterable[str] = (),
-                       where: str = "", contact: str = "") -> FilmModel:
+                       where: str = "", contact: str = "", enable: Iterable[str] = ()) -> FilmModel:
     """The film model named (or given) by ``spec`` for a ``geometry`` ("line" or "point") contact.
 
     Line contacts: a scene without ``piezoviscosity`` or ``elasticity`` among ``effects`` needs a model
     that can switch them off (its ``can_disable``); the model is made with them off, or the InputError
     lists the line models that can. Point contacts: ``"multigrid"`` is the point solver
     ``multigrid_point``; a model without piezoviscosity receives alpha = 0. ``where`` prefixes the
-    errors (``"ball_cone_cvt scene: "``), ``contact`` names the contact in them.
+    errors (``"ball_cone_cvt scene: "``), ``contact`` names the contact in them. ``enable``: the effects of
+    ``effects`` that the scene lets a line model solve itself — those in the model's ``can_enable`` (the
+    multigrid model's ``thermal`` and ``non_newtonian``) are switched on in it.
     """
     if geometry == "point":
         spec = "multigrid_point" if spec == "multigrid" else spec
@@ -72,8 +74,9 @@ def resolve_film_model(spec: Any, *, geometry: str = "line", effects: Iterable[s
             f"{where}film model {candidate.name!r} is for {candidate.geometry} contacts; "
             f"{contact or 'a line contact'} needs a line model"
         )
+    switched_on = {e: True for e in enable if e in frozenset(effects) and e in getattr(candidate, "can_enable", ())}
     switched_off = sorted({"piezoviscosity", "elasticity"} - frozenset(effects))
-    if not switched_off:
+    if not switched_off and not switched_on:
         return candidate
     cannot = [e for e in switched_off if e not in getattr(candidate, "can_disable", ())]
     if cannot:
@@ -86,7 +89,7 @@ def resolve_film_model(spec: Any, *, geometry: str = "line", effects: Iterable[s
             f"{where}film model {candidate.name!r} cannot represent a scene without {', '.join(cannot)}; "
             f"line models that can: {', '.join(able) or '(none)'}"
         )
-    flags = {effect: False for effect in switched_off}
+    flags = {effect: False for effect in switched_off} | switched_on
     if isinstance(spec, str):
         return registry.get("film_models", spec, **flags)
     if attrs.has(type(candidate)):
@@ -145,7 +148,8 @@ def ehl_groups(w, R, E_reduced, u_m, eta0, alpha, piezoviscosity):
       version=model_version)
 def line_film(film_model, R, w, E_reduced, u_m, eta0, alpha_effective, U, G, W, M, L, lubricant_state, density_law,
               **inputs):
-    """The isothermal films [m] of a line contact by ``film_model``, the model's validity note
+    """The isothermal films [m] of a line contact by ``film_model`` (a model that solves the thermal or
+    non-Newtonian film itself gives its isothermal Newtonian films as ``h_c_isothermal``...), the model's validity note
     ("ok", its range warnings named by the model, or the numerical solver's non-convergence), ``film_valid``
     (True where "ok") and its numerical solution
     (``film_solution``, None for a formula); ``inputs``: the further state names the model reads
@@ -158,7 +162,7 @@ def line_film(film_model, R, w, E_reduced, u_m, eta0, alpha_effective, U, G, W, 
     record = produced.get("convergence")
     if record is not None and not record.converged:
         messages.append(f"numerical solution not converged: {record.message}")
-    result = {f"{q}_isothermal": produced[q] for q in films_of(film_model)}
+    result = {f"{q}_isothermal": produced.get(f"{q}_isothermal", produced[q]) for q in films_of(film_model)}
     result["film_validity"] = "ok" if not messages else "; ".join(messages)
     result["film_valid"] = not messages
     result["film_solution"] = produced.get("ehl_solution")
@@ -175,6 +179,20 @@ def isothermal_films(**isothermal):
 def thermal_films(thermal_factor, **isothermal):
     """The films [m] reduced by the inlet shear-heating factor phi_T (``h_c = phi_T h_c_isothermal``, ...)."""
     return {name.removesuffix("_isothermal"): thermal_factor * value for name, value in isothermal.items()}
+
+
+@step("film_thickness", provides=FILMS, model="numerical")
+def solved_films(film_solution):
+    """The films [m] of a model that solved the non-Newtonian (or thermal) film itself: those of its solution
+    (:class:`camcontact.ehl.line_thermal.ThermalLineSolution`), no formula factor."""
+    return {"h_c": film_solution.h_c, "h_min": film_solution.h_min}
+
+
+@step("film_thickness", provides=(*FILMS, "thermal_factor"), model="numerical thermal")
+def solved_thermal_films(film_solution):
+    """:func:`solved_films` of a thermal solution, with its numerical thermal factor h_c/h_c,isothermal [-] in
+    place of the inlet shear-heating formula's."""
+    return solved_films(film_solution) | {"thermal_factor": film_solution.film_reduction}
 
 
 @step("film_thickness", provides=("h_c_inner", "h_c_outer", "h_min_inner", "h_min_outer", "h_min_bearing"),

@@ -139,3 +139,17 @@ def test_cavitation_cost_quick(tmp_path):
     np.testing.assert_allclose(starved["H_c / H_c,flooded"], starved["supply [-]"], rtol=5e-3)
     transient = frame[frame["case"] == "transient"]
     assert (transient["h_min after reversal [nm]"] > 0).all()
+
+
+def test_thermal_ehl_cost_quick(tmp_path):
+    """benchmarks/thermal_ehl_cost.py --quick: the three rungs (isothermal, formula factors, thermal solver) for the
+    film and the traction at three slide-to-roll ratios (timings never asserted)."""
+    frame = _load("thermal_ehl_cost").main(["--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "thermal_ehl_cost.csv").exists()
+    assert list(frame["rung"]) == ["isothermal", "formula", "thermal"] * 3
+    thermal = frame[frame["rung"] == "thermal"]
+    assert thermal["converged"].all() and (thermal["h_c / iso [-]"] < 1.0).all()
+    # the thermal solver's traction is below the isothermal one once the film heats (S > 0)
+    sliding = frame[frame["S [-]"] > 0].set_index(["S [-]", "rung"])["traction [-]"]
+    for S in (0.5, 1.0):
+        assert 0 < sliding[(S, "thermal")] < sliding[(S, "isothermal")]

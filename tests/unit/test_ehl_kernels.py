@@ -3,6 +3,8 @@
 import math
 
 import numpy as np
+
+from tests.kernel_inputs import PLAIN
 import pytest
 
 from camcontact.ehl import _kernels
@@ -35,7 +37,7 @@ def test_residual_twin(name):
     codes, params = problem.law_codes, problem.law_parameters
     python, compiled = np.empty(X.size), np.empty(X.size)
     full = np.ones(X.size)
-    phi = 1.0 + 0.5 * np.sin(3.0 * X)  # a flow factor that varies from node to node
+    phi = np.column_stack([1.0 + 0.5 * np.sin(3.0 * X), 1e-3 * (1.0 + X**2)])  # flow factors varying node to node
     _kernels.PY[name](P, H, full, phi, h, problem.lam, *codes, params, 1.0, 0.0, python)
     _kernels.compiled(name)(P, H, full, phi, h, problem.lam, *codes, params, 1.0, 0.0, compiled)
     np.testing.assert_allclose(compiled, python, rtol=1e-12, atol=1e-12)
@@ -49,7 +51,7 @@ def test_relaxation_twin_gives_the_same_sweep():
     results = []
     for function in (_kernels.PY["relax_hybrid"], _kernels.compiled("relax_hybrid")):
         P_, H_ = P.copy(), H.copy()
-        count = function(P_, H_, np.ones(X.size), np.ones(X.size), np.zeros(X.size), h, problem.lam, *codes, params, K, 0.7, 0.3, 4.0,
+        count = function(P_, H_, np.ones(X.size), PLAIN(X.size), np.zeros(X.size), h, problem.lam, *codes, params, K, 0.7, 0.3, 4.0,
                          0, 1, X.size - 2, dry, 1.0, 0.0, False, math.inf)
         results.append((P_, H_, count))
     np.testing.assert_allclose(results[1][0], results[0][0], rtol=1e-12, atol=1e-14)
@@ -109,8 +111,8 @@ def test_closed_gap_passes_no_pressure_flow():
     codes, params = problem.law_codes, problem.law_parameters
     python, compiled = np.empty(X.size), np.empty(X.size)
     full = np.ones(X.size)
-    _kernels.PY["reynolds_residual"](P, H, full, full, h, problem.lam, *codes, params, 1.0, 0.0, python)
-    _kernels.compiled("reynolds_residual")(P, H, full, full, h, problem.lam, *codes, params, 1.0, 0.0, compiled)
+    _kernels.PY["reynolds_residual"](P, H, full, PLAIN(X.size), h, problem.lam, *codes, params, 1.0, 0.0, python)
+    _kernels.compiled("reynolds_residual")(P, H, full, PLAIN(X.size), h, problem.lam, *codes, params, 1.0, 0.0, compiled)
     np.testing.assert_allclose(python, grid.residual(P, H), rtol=1e-12, atol=1e-12)
     np.testing.assert_allclose(compiled, python, rtol=1e-12, atol=1e-12)
     # a node whose three films are all closed: L_i is the wedge term alone
@@ -168,7 +170,7 @@ def test_coarse_newton_kernel_equals_the_dense_reference_newton(M, L, n):
                                                                       tolerance=1e-11, max_iterations=60)
     assert converged
     for function in (_fas_kernels.coarse_newton, _fas_kernels.compiled("coarse_newton")):
-        P, H0, iterations, status = function(P0, 0.3, f, 0.01, grid.parabola, K, np.ones(n), np.ones(n), np.zeros(n, dtype=bool),
+        P, H0, iterations, status = function(P0, 0.3, f, 0.01, grid.parabola, K, np.ones(n), PLAIN(n), np.zeros(n, dtype=bool),
                                              grid.h, problem.lam,
                                              *problem.law_codes, problem.law_parameters, True, 1.0, 0.0, 1e-11, 60)
         assert status == 0 and iterations == len(residuals)

@@ -128,18 +128,23 @@ def test_stribeck_plot_draws_every_curve():
 
 
 def test_with_a_numerical_film_the_traction_runs_over_its_pressure():
-    """film="multigrid": the contact's traction is the traction model's over the solution's pressure and film
-    profile (an independent call with the solution the scene kept), a few per cent from the Hertz path's."""
+    """film="multigrid" with non_newtonian: the film is the Eyring film of the thermal / non-Newtonian solver
+    (isothermal here) and the contact's traction is that solver's own; it equals the traction model's over the
+    solution's pressure and film profile (an independent call with the solution the scene kept) to 2e-3 — the
+    same Eyring stress bounded by the same limiting shear stress, the solver integrating over the wet film only —
+    and is a few per cent from the Hertz path's. (The case, M = 28, L = 14, incompressible, made the solver's first
+    flow factor diverge: it now carries the Eyring factor's pressure dependence in the kernels.)"""
     from camcontact.models.film_multigrid import Multigrid
 
     result = cc.Analysis(contact("5 kN"), effects=BASE | {"non_newtonian"}, models={"film": Multigrid(levels=7)},
                          outputs=["p_h", "b", "h_c", "u_m", "traction_coefficient", "film_solution"]).run()
     solution = result["film_solution"]
-    assert solution.record.converged
+    assert solution.record.converged and solution.rheology == "eyring" and not solution.thermal
+    assert result["traction_coefficient"] == pytest.approx(solution.traction_coefficient, rel=1e-12)
     model = registry.get("traction_models", "eyring")
     state = OIL.state(333.15)
     args = (result["p_h"], result["b"], result["h_c"], result["u_m"], state)
     numerical = model.contact(*args, profile=solution.traction_profile()).coefficient(0.2)
-    assert result["traction_coefficient"] == pytest.approx(numerical, rel=1e-12)
+    assert result["traction_coefficient"] == pytest.approx(numerical, rel=2e-3)
     hertz = model.contact(*args).coefficient(0.2)
     assert 0.0 < abs(numerical / hertz - 1.0) < 0.1

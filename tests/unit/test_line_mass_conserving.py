@@ -11,6 +11,8 @@ rupture is the Reynolds condition in a steady line contact: Jakobsson & Floberg 
 import math
 
 import numpy as np
+
+from tests.kernel_inputs import PLAIN
 import pytest
 
 from camcontact.ehl import _kernels
@@ -23,7 +25,7 @@ def _relax(kernel, P, H, theta, h, problem, sweeps=1, supply=math.inf, s=1.0):
     K = np.array([_kernels.kernel_value(float(d), h) for d in range(16)])
     dry = np.zeros(P.size, dtype=np.bool_)
     for _ in range(sweeps):
-        kernel(P, H, theta, np.ones(P.size), np.zeros(P.size), h, problem.lam, *problem.law_codes, problem.law_parameters, K, 0.7, 0.3,
+        kernel(P, H, theta, PLAIN(P.size), np.zeros(P.size), h, problem.lam, *problem.law_codes, problem.law_parameters, K, 0.7, 0.3,
                4.0, 0, 1, P.size - 2, dry, s, 0.0, True, supply)
 
 
@@ -64,7 +66,7 @@ def test_theta_twins_give_the_same_sweep_and_residual():
         P_, H_, theta = P.copy(), H.copy(), np.ones(n)
         _relax(relax, P_, H_, theta, h, problem, sweeps=3)
         out = np.empty(n)
-        residual(P_, H_, theta, np.ones(P_.size), h, problem.lam, *problem.law_codes, problem.law_parameters, 1.0, 0.0, out)
+        residual(P_, H_, theta, PLAIN(P_.size), h, problem.lam, *problem.law_codes, problem.law_parameters, 1.0, 0.0, out)
         results.append((P_, theta, out))
     assert (results[0][1] < 1.0).sum() > 5  # the cavitated outlet has partly filled nodes
     for a, b in zip(results[0], results[1]):

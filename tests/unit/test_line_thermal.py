@@ -87,14 +87,17 @@ def test_eyring_film_state_is_the_traction_models_stress(eta, h, du):
     """tau_m = tau0 asinh(eta du/(tau0 h)) (the Eyring stress of camcontact.contact.fluid_traction), Poiseuille
     factor cosh(tau_m/tau0) (Conry, Wang & Cusano 1987), dissipation tau_m du + 12 eta q^2/(Phi h^3)."""
     tau0, flux = 5e6, 2e-7
-    tau, phi, Q = _thermal_kernels.film_state(eta, h, flux, du, tau0)
+    tau, phi, Q = _thermal_kernels.film_state(eta, h, flux, du, tau0, math.inf)
     expected, _ = film_shear_stress(np.log(eta * du / h / tau0), "eyring", tau0, None)
     assert tau == pytest.approx(float(expected), rel=1e-12)
     assert phi == pytest.approx(math.cosh(tau / tau0), rel=1e-12)
     assert Q == pytest.approx(tau * du + 12 * eta * flux**2 / (phi * h**3), rel=1e-12)
-    tau_n, phi_n, Q_n = _thermal_kernels.film_state(eta, h, flux, du, 0.0)  # Newtonian
+    tau_n, phi_n, Q_n = _thermal_kernels.film_state(eta, h, flux, du, 0.0, math.inf)  # Newtonian
     assert (tau_n, phi_n) == (pytest.approx(eta * du / h), 1.0)
     assert Q_n == pytest.approx(eta * du**2 / h + 12 * eta * flux**2 / h**3, rel=1e-12)
+    bound = 0.5 * tau  # a limiting shear stress below the Eyring stress bounds it; the film slips at that stress
+    tau_l, phi_l, Q_l = _thermal_kernels.film_state(eta, h, flux, -du, tau0, bound)
+    assert tau_l == -bound and phi_l == phi and Q_l == pytest.approx(bound * du + 12 * eta * flux**2 / (phi * h**3))
 
 
 # ------------------------------------------------------------------------------ energy equation
@@ -122,7 +125,7 @@ def test_jaeger_weights_integrate_a_uniform_band_source():
 def _sweep_inputs(n=60, flux=0.0, effusivity=1e12, heat_capacity=1.0):
     zeta, D, D2, weights = _collocation(9)
     h = np.full(n, 1e-6)
-    return dict(dx=1e-6, h=h, eta_iso=np.full(n, 0.01), flux=np.full(n, flux), u1=1.0, du=2.0, tau0=0.0, beta=0.0,
+    return dict(dx=1e-6, h=h, eta_iso=np.full(n, 0.01), flux=np.full(n, flux), limit=np.full(n, np.inf), u1=1.0, du=2.0, tau0=0.0, beta=0.0,
                 conductivity=0.1, heat_capacity=heat_capacity, C1=1.0 / (effusivity * math.sqrt(math.pi)),
                 C2=1.0 / (effusivity * math.sqrt(3.0 * math.pi)), zeta=zeta, D=D, D2=D2, weights=weights,
                 T=np.zeros((n, 9)), q1=np.zeros(n), q2=np.zeros(n), tolerance=1e-12, max_iterations=60)

@@ -4,6 +4,8 @@ import math
 import warnings
 
 import numpy as np
+
+from tests.kernel_inputs import PLAIN
 import pytest
 
 from camcontact.errors import ConvergenceError, ConvergenceWarning, InputError
@@ -40,7 +42,7 @@ def test_transient_operator_reduces_to_the_steady_one():
     grid = LineGrid(problem, X.size, "direct")
     np.testing.assert_allclose(grid.X, X, rtol=0, atol=1e-14)
     out = np.empty(X.size)
-    _kernels.reynolds_residual(P, H, np.ones(X.size), np.ones(X.size), h, problem.lam, *codes, params, 1.0, 0.0, out)
+    _kernels.reynolds_residual(P, H, np.ones(X.size), PLAIN(X.size), h, problem.lam, *codes, params, 1.0, 0.0, out)
     np.testing.assert_allclose(out, grid.residual(P, H), rtol=1e-12, atol=1e-12)
 
 
@@ -49,8 +51,8 @@ def test_reversed_flow_operator_is_the_mirror_image():
     problem, X, h, P, H, _ = _state()
     codes, params = problem.law_codes, problem.law_parameters
     forward, backward = np.empty(X.size), np.empty(X.size)
-    _kernels.reynolds_residual(P, H, np.ones(X.size), np.ones(X.size), h, problem.lam, *codes, params, 0.6, 3.0, forward)
-    _kernels.reynolds_residual(P[::-1].copy(), H[::-1].copy(), np.ones(X.size), np.ones(X.size), h, problem.lam, *codes, params, -0.6, 3.0,
+    _kernels.reynolds_residual(P, H, np.ones(X.size), PLAIN(X.size), h, problem.lam, *codes, params, 0.6, 3.0, forward)
+    _kernels.reynolds_residual(P[::-1].copy(), H[::-1].copy(), np.ones(X.size), PLAIN(X.size), h, problem.lam, *codes, params, -0.6, 3.0,
                                backward)
     np.testing.assert_allclose(backward[::-1], forward, rtol=1e-13, atol=1e-13)
 
@@ -59,7 +61,7 @@ def test_zero_speed_operator_has_only_poiseuille_and_squeeze():
     problem, X, h, P, H, _ = _state()
     codes, params = problem.law_codes, problem.law_parameters
     out = np.empty(X.size)
-    _kernels.reynolds_residual(P, H, np.ones(X.size), np.ones(X.size), h, problem.lam, *codes, params, 0.0, 2.5, out)
+    _kernels.reynolds_residual(P, H, np.ones(X.size), PLAIN(X.size), h, problem.lam, *codes, params, 0.0, 2.5, out)
     rho = problem.density_ratio(P)
     xi = rho * H**3 * np.exp(-problem.log_viscosity(P)) / problem.lam
     half = 0.5 * (xi[1:] + xi[:-1])
@@ -75,15 +77,15 @@ def test_kernel_twins_equal_compiled(s, c_t):
     codes, params = problem.law_codes, problem.law_parameters
     K = np.array([_kernels.kernel_value(float(d), h) for d in range(16)])
     python, compiled = np.empty(X.size), np.empty(X.size)
-    _kernels.PY["reynolds_residual"](P, H, np.ones(X.size), np.ones(X.size), h, problem.lam, *codes, params, s, c_t, python)
-    _kernels.compiled("reynolds_residual")(P, H, np.ones(X.size), np.ones(X.size), h, problem.lam, *codes, params, s, c_t, compiled)
+    _kernels.PY["reynolds_residual"](P, H, np.ones(X.size), PLAIN(X.size), h, problem.lam, *codes, params, s, c_t, python)
+    _kernels.compiled("reynolds_residual")(P, H, np.ones(X.size), PLAIN(X.size), h, problem.lam, *codes, params, s, c_t, compiled)
     np.testing.assert_allclose(compiled, python, rtol=1e-12, atol=1e-12)
 
     dry = np.zeros(X.size, dtype=np.bool_)
     results = []
     for kernel in (_kernels.PY["relax_hybrid"], _kernels.compiled("relax_hybrid")):
         P1, H1 = P.copy(), H.copy()
-        count = kernel(P1, H1, np.ones(X.size), np.ones(X.size), f, h, problem.lam, *codes, params, K, 0.7, 0.3, 4.0, 0, 1, X.size - 2,
+        count = kernel(P1, H1, np.ones(X.size), PLAIN(X.size), f, h, problem.lam, *codes, params, K, 0.7, 0.3, 4.0, 0, 1, X.size - 2,
                        dry, s, c_t, False, math.inf)
         results.append((P1, H1, count))
     np.testing.assert_allclose(results[1][0], results[0][0], rtol=1e-12, atol=1e-13)
@@ -96,7 +98,7 @@ def test_kernel_twins_equal_compiled(s, c_t):
     Pc = np.interp(Xc, X, P)
     table = kernel_coefficients(hc, n)
     K_over_pi = table[np.abs(np.arange(n)[:, None] - np.arange(n)[None, :])] / math.pi
-    args = (Pc, 0.3, np.zeros(n), 0.0, 0.5 * Xc**2, K_over_pi, np.ones(n), np.ones(n), np.zeros(n, dtype=np.bool_), hc, problem.lam,
+    args = (Pc, 0.3, np.zeros(n), 0.0, 0.5 * Xc**2, K_over_pi, np.ones(n), PLAIN(n), np.zeros(n, dtype=np.bool_), hc, problem.lam,
             *codes, params, True, s, c_t, 1e-11, 60)
     py = _fas_kernels.PY["coarse_newton"](*args)
     nb = _fas_kernels.compiled("coarse_newton")(*args)

@@ -31,6 +31,7 @@ def test_readme_example_runs(name, tmp_path):
         assert "3.98623" in completed.stdout  # 2 b l with b = 132.874 um (Hertz), l = 15 mm
     # what the comments of the examples say they print
     expected = {"use-from-python": ["megapascal", "available"], "failure-isolation": ["ConvergenceError"],
-                "raceway-conventions": ["5.181", "1.98"], "sweep-executor": ["True"], "starved": ["-1.12", " 0.49"]}
+                "raceway-conventions": ["5.181", "1.98"], "sweep-executor": ["True"], "starved": ["-1.12", " 0.49"],
+                "thermal": ["0.937 0.0358 59"]}
     for text in expected.get(name, []):
         assert text in completed.stdout, (name, text, completed.stdout[-2000:])

@@ -29,6 +29,8 @@ from camcontact.steps.film import (
     raceway_roughness,
     roller_films,
     roller_thermal_films,
+    solved_films,
+    solved_thermal_films,
     thermal_films,
 )
 from step_checks import assert_provides
@@ -141,6 +143,18 @@ def test_isothermal_and_thermal_films():
     assert_provides(thermal_films, out)
     assert out["h_c"] == pytest.approx(1.6e-7) and out["h_min"] == pytest.approx(1.2e-7)
     assert_provides(thermal_films, thermal_films(0.5, h_c_isothermal=2e-7), subset=("h_c",))
+
+
+def test_solved_films_are_the_thermal_solutions():
+    """A model that solved the thermal / non-Newtonian film gives its solution's films, and the thermal variant its
+    numerical factor h_c/h_c,isothermal in place of the formula's (a stand-in solution with the three values)."""
+    solution = SimpleNamespace(h_c=8.1e-7, h_min=6.3e-7, film_reduction=0.937)
+    out = solved_films(solution)
+    assert_provides(solved_films, out)
+    assert out == {"h_c": 8.1e-7, "h_min": 6.3e-7}
+    out = solved_thermal_films(solution)
+    assert_provides(solved_thermal_films, out)
+    assert out["thermal_factor"] == 0.937 and out["h_c"] == 8.1e-7
 
 
 def test_roller_thermal_films_scale_every_raceway_film():
