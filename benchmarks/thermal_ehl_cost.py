@@ -109,7 +109,8 @@ def plot(frame: pd.DataFrame, path: Path) -> None:
     thermal = finest[finest["rung"] == "thermal"]
     films.plot(thermal["S [-]"], thermal["h_c / iso [-]"], "o-", label="thermal solver")
     formula = finest[finest["rung"] == "formula"]
-    for short, name in (("MW", "Murch & Wilson (rolling)"), ("WS", "Wilson & Sheu"), ("ZC", "Gupta et al. (Zhu & Cheng)")):
+    names = (("MW", "Murch & Wilson (rolling)"), ("WS", "Wilson & Sheu"), ("ZC", "Gupta et al. (Zhu & Cheng)"))
+    for short, name in names:
         films.plot(formula["S [-]"], formula[f"h_c / iso {short} [-]"], "s--", label=name)
     films.set(xlabel="slide-to-roll ratio S", ylabel="h_c / h_c isothermal", title="Thermal film reduction")
     films.legend(fontsize=8)

@@ -22,6 +22,8 @@ around that solver:
 
 Levels above :data:`NESTED_FROM` iterate on coarser levels first (nested iteration). A multigrid solve that fails
 with the mixed flow factors is retried with shorter plain steps; the record says what happened.
+:func:`thermal_transient_cycle` couples the same energy equation to the transient march of
+:mod:`camcontact.ehl.line_transient`, step by step.
 
 Models (equations in :mod:`camcontact.ehl._thermal_kernels`):
 
@@ -79,7 +81,8 @@ from .line_multigrid import solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord, LineEHLSolution
 
-__all__ = ["ThermalLineContact", "ThermalLineSolution", "solve_thermal"]
+__all__ = ["ThermalLineContact", "ThermalLineSolution", "ThermalTransientResult", "solve_thermal",
+           "thermal_transient_cycle"]
 
 #: levels above this one iterate first on the levels two, four... below (down to this one), then carry the flow
 #: factors up (nested iteration): level 10 took 14 iterations at 0.43 s each from the isothermal start, measured;
@@ -363,11 +366,12 @@ def _collocation(points: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.nd
 
 
 def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: bool, tau0: float, state: dict,
-            kernels: dict) -> dict:
+            kernels: dict, scales: dict | None = None) -> dict:
     """Temperature, stress and flow-factor fields of ``solution`` from the layered energy model (sweeps warm-started
-    from ``state``, which keeps the temperatures between iterations)."""
+    from ``state``, which keeps the temperatures between iterations); ``scales`` (b, p_h, h_scale of the solution's
+    X, P, H; default: the contact's Hertz scales)."""
     problem = solution.problem
-    scales = problem.scales(contact.R, contact.w, contact.E_reduced)
+    scales = scales or problem.scales(contact.R, contact.w, contact.E_reduced)
     b, p_h, h_scale = scales["b"], scales["p_h"], scales["h_scale"]
     X, P = solution.X, solution.P
     n = X.size
@@ -637,3 +641,105 @@ def _record(changes, loads, works, start, converged, message, levels, solution) 
                              nodes=int(solution.X.size), residuals=tuple(changes), load_errors=tuple(loads),
                              work_units=tuple(works), wall_time=time.perf_counter() - start, converged=converged,
                              message=message, tolerance=float("nan"))
+
+
+@attrs.frozen
+class ThermalTransientResult:
+    """Result of :func:`thermal_transient_cycle`: the transient films and, per instant, the film's thermal state."""
+
+    films: object  #: the :class:`camcontact.ehl.line_transient.TransientLineResult` of the march
+    temperature_rise: np.ndarray = attrs.field(repr=False, eq=False)  #: largest film mean rise [K] per instant
+    surface_temperature_rise: np.ndarray = attrs.field(repr=False, eq=False)  #: largest surface rise [K]
+    traction_coefficient: np.ndarray = attrs.field(repr=False, eq=False)  #: int tau_m dx / w, sign of u1 - u2
+    thermal: np.ndarray = attrs.field(repr=False, eq=False)  #: the energy equation ran at the instant [bool]
+    energy_time: float  #: wall time spent on the energy equation [s]
+
+    def to_frame(self):
+        """The march's frame (:meth:`TransientLineResult.to_frame`) with the thermal columns."""
+        frame = self.films.to_frame()
+        frame["max film temperature rise [K]"] = self.temperature_rise
+        frame["max surface temperature rise [K]"] = self.surface_temperature_rise
+        frame["traction coefficient [-]"] = self.traction_coefficient
+        frame["thermal"] = self.thermal
+        return frame
+
+
+def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact, levels: int = 8,
+                            thermal: bool = True, non_newtonian: bool | None = None, tolerance: float = 1e-6,
+                            strict: bool = False, compiled: bool = True, **options) -> ThermalTransientResult:
+    """The transient line contact (:func:`camcontact.ehl.line_transient.transient_cycle`, squeeze term, BDF2) with
+    the thermal and non-Newtonian film of this module, coupled step by step.
+
+    After each instant the energy equation (:func:`camcontact.ehl._thermal_kernels.layer_sweep`, warm-started from
+    the previous instant) runs on the instant's pressure and film with its surface speeds, and its flow-factor
+    parameters (a, k) are the next step's: a lagged coupling, quasi-steady in the energy (the film crosses the
+    contact in b/u_m, tens of microseconds, against steps of a degree of cam, a hundred microseconds or more at
+    1000 rpm). The first instant starts isothermal (the steady start of the march). Instants where a surface does
+    not move through the contact in the direction of the entrainment (u1 or u2 <= 0: a flat follower near its
+    reversal) have no energy solution here: the next step runs isothermal and ``thermal`` is False there.
+
+    Parameters
+    ----------
+    times, w, R : arrays
+        As :func:`transient_cycle` [s], [N/m], [m].
+    u1, u2 : arrays [m/s]
+        The surface speeds (u_m = (u1 + u2)/2).
+    contact : ThermalLineContact
+        The lubricant's, the surfaces' and the rheology's data (its own R, w, u1, u2 are not used).
+    levels, tolerance, strict, compiled, options
+        As :func:`transient_cycle` (``options``: its further keywords).
+    thermal, non_newtonian : bool
+        As :func:`solve_thermal`.
+    """
+    from .line_transient import transient_cycle
+
+    if not isinstance(contact, ThermalLineContact):
+        raise InputError(f"thermal_transient_cycle: contact = {contact!r}; allowed: a ThermalLineContact")
+    if non_newtonian is None:
+        non_newtonian = contact.eyring_stress is not None
+    if non_newtonian and contact.eyring_stress is None:
+        raise InputError("thermal_transient_cycle: non_newtonian=True needs the contact's eyring_stress [Pa]")
+    times = np.asarray(times, dtype=float)
+    n = times.size
+    series = {name: np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
+              for name, value in (("w", w), ("R", R), ("u1", u1), ("u2", u2))}
+    tau0 = float(contact.eyring_stress) if non_newtonian else 0.0
+    kernels = {name: _thermal_kernels.compiled(name) if compiled else _thermal_kernels.PY[name]
+               for name in ("layer_sweep", "film_fields")}
+    state: dict = {}
+    out = {name: np.full(n, np.nan) for name in ("rise", "surface", "traction")}
+    ran = np.zeros(n, dtype=bool)
+    clock = [0.0]
+
+    def after_step(i, solver):
+        start = time.perf_counter()
+        u1_i, u2_i = series["u1"][i], series["u2"][i]
+        if not (u1_i > 0.0 and u2_i > 0.0):
+            solver.flow = None
+            state.clear()
+            clock[0] += time.perf_counter() - start
+            return
+        here = attrs.evolve(contact, R=series["R"][i], w=series["w"][i], u1=u1_i, u2=u2_i)
+        sc = solver.scaling
+        H = solver.film(solver.P, solver.H0, series["R"][i])
+        flow = None if solver.flow is None else np.column_stack(
+            [solver.flow[0], np.zeros(solver.n) if solver.flow[1] is None else solver.flow[1]])
+        snapshot = LineEHLSolution(problem=solver.problem, level=solver.levels, X=solver.X, P=solver.P, H=H,
+                                   H0=solver.H0, record=None, flow_factor=flow)
+        fields = _layers(here, snapshot, thermal, tau0, state, kernels,
+                         scales={"b": sc.b, "p_h": sc.p_h, "h_scale": sc.h_scale})
+        wet = fields["wet"]
+        out["rise"][i] = float(fields["Tm"][wet].max())
+        out["surface"][i] = float(max(fields["T1"][wet].max(), fields["T2"][wet].max()))
+        out["traction"][i] = -_trapezoid(fields["tau"], fields["x"], wet) / series["w"][i]
+        ran[i] = True
+        solver.flow = (fields["a"], fields["k"] if non_newtonian else None)
+        clock[0] += time.perf_counter() - start
+
+    u_m = 0.5 * (series["u1"] + series["u2"])
+    opts = dict(E_reduced=contact.E_reduced, eta0=contact.eta0, alpha=contact.alpha, z=contact.z,
+                viscosity=contact.viscosity, density=contact.density, p0=contact.p0, elastic=contact.elastic)
+    films = transient_cycle(times, series["w"], series["R"], u_m, levels=levels, tolerance=tolerance, strict=strict,
+                            compiled=compiled, after_step=after_step, **(opts | options))
+    return ThermalTransientResult(films=films, temperature_rise=out["rise"], surface_temperature_rise=out["surface"],
+                                  traction_coefficient=out["traction"], thermal=ran, energy_time=clock[0])

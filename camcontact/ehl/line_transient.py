@@ -312,6 +312,9 @@ class TransientLineSolver:
         self.dt_previous: float | None = None
         #: film fraction on the reference grid (1: full film; below 1 where a mass-conserving march cavitates)
         self.theta = np.ones(self.n)
+        #: flow factors (a, k) on the reference grid for the next steps (:func:`camcontact.ehl._kernels.flow_factor`;
+        #: None: the isothermal Newtonian film), set by the thermal march (:mod:`camcontact.ehl.line_thermal`)
+        self.flow: tuple[np.ndarray, np.ndarray | None] | None = None
 
     def _hierarchy(self, settings, mirrored: bool = False) -> _TransientHierarchy:
         """The level hierarchy of ``settings``; ``mirrored``: of the domain reflected about X = 0
@@ -455,6 +458,10 @@ class TransientLineSolver:
             hierarchy.set_conditions(curvature, abs(s), c_t)
             theta = hierarchy.theta(hierarchy.levels[-1])
             theta[:] = flip(self.theta)  # every attempt starts from the film fraction of the last step
+            if self.flow is None:
+                hierarchy.set_flow_factor(np.ones(self.n))
+            else:
+                hierarchy.set_flow_factor(flip(self.flow[0]), None if self.flow[1] is None else flip(self.flow[1]))
             P_new, H0_new, H, record = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
             return _Attempt(P=flip(P_new), H0=H0_new, H=flip(H), record=record, settings=settings,
                             theta=flip(theta))
@@ -522,7 +529,7 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
                     reference: dict | None = None, domain: tuple | None = None,
                     settings: MultigridSettings | None = None, initial: tuple | None = None,
                     keep_fields: bool = False, strict: bool = False, compiled: bool = True,
-                    cavitation: str = "reynolds") -> TransientLineResult:
+                    cavitation: str = "reynolds", after_step=None) -> TransientLineResult:
     """Transient line-contact films over a sequence of instants (e.g. a cam cycle).
 
     Parameters
@@ -565,6 +572,10 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         Jakobsson–Floberg–Olsson film fraction carried from step to step: the history of the time
         derivative is the content theta rho H, so that lubricant left behind the contact is what returns
         to it when the entrainment reverses (both domain ends are flooded reservoirs).
+    after_step : callable, optional
+        ``after_step(i, solver)`` after the start (i = 0) and after each step i: it may read the
+        :class:`TransientLineSolver`'s state and set its ``flow`` factors for the next steps (the thermal march,
+        :func:`camcontact.ehl.line_thermal.thermal_transient_cycle`).
 
     Returns
     -------
@@ -612,8 +623,12 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
             empty = ConvergenceRecord(method="given initial state", levels=levels, nodes=solver.n, residuals=(),
                                       load_errors=(), work_units=(), wall_time=0.0, converged=True)
             steps.append(solver._report(times[0], H, empty))
+        if after_step is not None:
+            after_step(0, solver)
         for i in range(1, n):
             steps.append(solver.step(times[i], w[i], R[i], u_m[i]))
+            if after_step is not None:
+                after_step(i, solver)
     others = [c for c in caught if not issubclass(c.category, ConvergenceWarning)]
     for c in others:
         warnings.warn_explicit(c.message, c.category, c.filename, c.lineno)

@@ -153,3 +153,16 @@ def test_thermal_ehl_cost_quick(tmp_path):
     sliding = frame[frame["S [-]"] > 0].set_index(["S [-]", "rung"])["traction [-]"]
     for S in (0.5, 1.0):
         assert 0 < sliding[(S, "thermal")] < sliding[(S, "isothermal")]
+
+
+def test_thermal_cam_cycle_quick(tmp_path):
+    """benchmarks/thermal_cam_cycle.py --quick: the LS-1 roller turn marched isothermal and thermal, rolling and
+    with 5 % slip: films, temperatures, traction and costs (timings never asserted)."""
+    frame = _load("thermal_cam_cycle").main(["--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "thermal_cam_cycle.csv").exists() and list(frame["slip"]) == [0.0, 0.05]
+    assert (frame["not converged (thermal)"] == 0).all()
+    # the inlet heating thins the film a few per cent; slip heats the film more and carries a traction
+    assert (frame["h_min thermal [nm]"] < frame["h_min isothermal [nm]"]).all()
+    assert frame["max film rise [K]"].iloc[1] > frame["max film rise [K]"].iloc[0] > 0
+    traction = frame["mean traction [-]"]
+    assert traction.iloc[0] == pytest.approx(0.0, abs=1e-12) and traction.iloc[1] > 0
