@@ -88,7 +88,7 @@ __all__ = ["ThermalLineContact", "ThermalLineSolution", "ThermalTransientResult"
 #: factors up (nested iteration): level 10 took 14 iterations at 0.43 s each from the isothermal start, measured;
 #: the films agree to 1e-4 between levels 8 and 10
 NESTED_FROM = 7
-#: Anderson mixing of ln phi over this many previous iterations (Walker & Ni 2011): with a plain relaxation of 0.8
+#: Anderson mixing of (ln a, ln k) over this many previous iterations (Walker & Ni 2011): with a plain relaxation of 0.8
 #: a Newtonian film at S = 0.05 (level 8) oscillated at the outlet spike at 2e-3 for 40 iterations (0.4: 15
 #: iterations), and Eyring films did not settle there at all, with a per-node relaxation either (measured)
 ANDERSON_DEPTH = 5
@@ -465,15 +465,16 @@ def solve_thermal(
     tolerance : float
         Tolerance of each multigrid solve (:func:`solve_multigrid`).
     flow_tolerance, output_tolerance : float
-        Stop when the mean of |ln phi_new - ln phi| over the wet nodes (phi the flow factors) is below
-        ``flow_tolerance`` and either its largest value is too, or H_c, H_min and the traction force changed by
-        less than ``output_tolerance`` (relative) from the previous iteration. (A few nodes at the outlet
-        constriction of an Eyring film settle far more slowly than the rest, measured at 1e-2 after 40
-        iterations with the traction and films settled to 1e-6.)
+        Stop when the mean of |ln F_new - ln F| over the wet nodes (F the flow factors at the current pressure) is
+        below ``flow_tolerance`` and either its largest value is too, or H_c, H_min and the traction force changed
+        by less than ``output_tolerance`` (relative) from the previous iteration. (The largest change stays at a
+        few nodes of the outlet constriction, where the film moves from iteration to iteration: measured 0.003-0.04
+        when the films and the traction have settled to 1e-4.)
     relaxation : float
-        Under-relaxation of ln phi per iteration, in (0, 1].
+        Mixing parameter of the Anderson iteration on (ln a, ln k) (the plain relaxation of its first step and of
+        the shortened steps after a failed solve), in (0, 1].
     max_iterations : int
-        Fixed-point iterations at most (each one multigrid solve and one march).
+        Fixed-point iterations at most per level (each one multigrid solve and one energy solve).
     strict : bool
         Raise ConvergenceError instead of warning when not converged.
     compiled : bool
@@ -488,8 +489,9 @@ def solve_thermal(
                          "stress tau0 of the lubricant, e.g. 2-10 MPa for mineral oils)")
     if not (isinstance(relaxation, (int, float)) and 0.0 < relaxation <= 1.0):
         raise InputError(f"solve_thermal: relaxation = {relaxation!r}; allowed: 0 < relaxation <= 1")
-    if not (isinstance(flow_tolerance, (int, float)) and flow_tolerance > 0.0):
-        raise InputError(f"solve_thermal: flow_tolerance = {flow_tolerance!r}; allowed: > 0")
+    for name, value in (("flow_tolerance", flow_tolerance), ("output_tolerance", output_tolerance)):
+        if not (isinstance(value, (int, float)) and value > 0.0):
+            raise InputError(f"solve_thermal: {name} = {value!r}; allowed: > 0")
     if not (isinstance(max_iterations, int) and max_iterations >= 1):
         raise InputError(f"solve_thermal: max_iterations = {max_iterations!r}; allowed: an integer >= 1")
     start = time.perf_counter()

@@ -140,8 +140,10 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
     traction = fluid_traction_model(contact.lubricant, effects, models.get("traction"))
     film_model = resolve_film_model(models.get("film", DEFAULT_FILM), effects=effects,
                                     enable=("thermal", "non_newtonian"))
-    if getattr(film_model, "non_newtonian", False) is True:  # the film's rheology is the traction model's
-        eyring = getattr(traction, "eyring_stress", None)  # none: a Newtonian traction model was asked for
+    if getattr(film_model, "thermal", False) is True or getattr(film_model, "non_newtonian", False) is True:
+        # the solved film's rheology is the traction model's: its Eyring stress (none: a Newtonian traction model
+        # was asked for) and its limiting shear stress, which also bounds a Newtonian film's heat
+        eyring = getattr(traction, "eyring_stress", None) if film_model.non_newtonian else None
         film_model = attrs.evolve(film_model, non_newtonian=eyring is not None, eyring_stress=eyring,
                                   limiting_shear_stress=getattr(traction, "limiting_shear_stress", 0.0) or 0.0,
                                   limiting_shear_slope=getattr(traction, "limiting_shear_slope", None))

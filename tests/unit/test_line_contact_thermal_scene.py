@@ -96,3 +96,14 @@ def test_missing_thermal_data_is_named(contact):
     assert "missing: specific_heat" in steps.loc[steps["step"] == "film", "error"].iloc[0]
     with pytest.raises(cc.InputError, match="missing: specific_heat"):
         _run(bare, {"thermal"}, outputs=outputs, strict=True)
+
+
+def test_thermal_alone_solves_a_newtonian_film_bounded_by_the_limiting_shear_stress(contact):
+    """thermal without non_newtonian: a Newtonian film with the energy equation, its heat bounded by the scene's
+    limiting shear stress (0.047 p, the traction models' default), films and numerical factor from the solver."""
+    result = _run(contact, {"thermal"}, outputs=["h_c", "h_c_isothermal", "thermal_factor", "film_solution"])
+    solution = result["film_solution"]
+    assert solution.rheology == "newtonian" and solution.thermal
+    assert solution.contact.limiting_shear_slope == pytest.approx(0.047)
+    assert float(result["thermal_factor"]) == pytest.approx(float(result["h_c"]) / float(result["h_c_isothermal"]))
+    assert 0.85 < float(result["thermal_factor"]) < 1.0
