@@ -219,3 +219,39 @@ def test_cycle_schedules_visit_the_coarse_grids_as_v_f_w_cycles():
         return int((schedule[:, 0] == SOLVE).sum())
 
     assert (solves("V"), solves("W"), solves("F")) == (1, 4, 3)
+
+
+def test_spike_zone_solve_twin_and_detection():
+    """The local Newton at the pressure spike (``relax_spikes``), compiled and as plain Python, inside one F-cycle
+    from a perturbed spike (M 10, L 20, level 6): the same pressures. The detection marks the nodes around the
+    fall of ln(eta-bar) just past the pressure maximum (one zone) and nothing at a monotonic outlet."""
+    from camcontact.ehl import _fas_kernels
+    from camcontact.ehl.line_multigrid import LineHierarchy, MultigridSettings, solve_multigrid
+
+    problem = LineEHLProblem(M=10, L=20, alpha=2.2e-8, z=0.68)
+    solution = solve_multigrid(problem, 6, tolerance=1e-9, strict=True)
+    settings = MultigridSettings()
+    hierarchy = LineHierarchy(problem, 6, settings, compiled=True)
+    finest = hierarchy.levels[-1]
+    H = hierarchy.film(finest, solution.P, solution.H0)
+    marked = np.zeros(finest.n, dtype=np.bool_)
+    args = (solution.P.copy(), H, solution.H0, np.zeros(finest.n), np.ones(finest.n), hierarchy.flow_factor(finest),
+            np.zeros(finest.n, dtype=np.bool_), finest.h, hierarchy.lam, hierarchy.viscosity_code,
+            hierarchy.density_code, hierarchy.params, True, 1.0, 0.0, settings.spike_drop, marked, True)
+    _fas_kernels.relax_spikes(*args)
+    peak = int(np.argmax(solution.P))
+    nodes = np.flatnonzero(marked)  # six per falling edge; two neighbouring edges merge into one zone
+    assert 6 <= nodes.size <= 8 and np.all(np.diff(nodes) == 1) and nodes[0] <= peak + 1 <= nodes[-1]
+    monotonic = np.where(finest.X < 0.5, 1.0, np.maximum(1.0 - 4.0 * (finest.X - 0.5), 0.0))  # falls past X = 0.5
+    marked[:] = False
+    _fas_kernels.relax_spikes(monotonic, *args[1:])
+    assert not marked.any()
+    start = solution.P.copy()
+    start[peak - 3:peak + 4] *= 1.0 + 0.02 * np.sin(np.arange(7))
+    results = []
+    for compiled in (False, True):
+        solver = LineHierarchy(problem, 6, settings, compiled=compiled)
+        results.append(solver.cycle(5, start.copy(), solution.H0, np.zeros(finest.n), 0.0) + (solver.work,))
+    (P_py, H0_py, work_py), (P_nb, H0_nb, work_nb) = results
+    np.testing.assert_allclose(P_nb, P_py, rtol=1e-10, atol=1e-12)
+    assert H0_nb == pytest.approx(H0_py, abs=1e-12) and work_nb == pytest.approx(work_py)

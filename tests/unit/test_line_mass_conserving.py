@@ -111,7 +111,7 @@ def test_the_cavitated_outlet_carries_the_contact_s_mass_flux(flooded_pair):
 
 
 # ----------------------------------------------------------------------------- transient: reversal
-def _reciprocating(cavitation, tolerance=1e-8, steps=41):
+def _reciprocating(cavitation, tolerance=1e-9, steps=41):
     """A line contact whose entrainment reverses (u_m = 2 cos(2 pi t / 8 ms) m/s over 4 ms; R 20 mm,
     w 200 kN/m, E' 226 GPa, eta0 0.05 Pa s, alpha 20/GPa), BDF1, level 6."""
     from camcontact.ehl.line_transient import transient_cycle
@@ -135,8 +135,10 @@ def test_the_transient_march_conserves_the_lubricant_step_by_step(reversal):
     """Discrete mass balance of each converged BDF1 step, counted on the returned fields: the change of the
     content theta rho H over the interior nodes equals the flux in minus the flux out through the end faces
     (limited upwind wedge flux times s minus the Poiseuille flux; on the grid mirrored for u_m < 0, as
-    solved). The balance holds as well as the step's equations are converged: measured within 1.4e-4 of the
-    inflow at tolerance 1e-8 (the inflow is small near the reversal). The four steps right after the reversal
+    solved). The balance holds as well as the step's equations are converged: measured within 3.8e-5 of the
+    inflow at tolerance 1e-9 (the inflow is small near the reversal; at tolerance 1e-8 the steps stop a cycle
+    earlier since the multigrid solves the pressure spike together (``spike_drop``), and the worst step is
+    5.2e-4 off). The four steps right after the reversal
     stagnate (the reformation front of the returning film) and are flagged, not checked."""
     _, (u_m, result) = reversal
     scaling, problem, X = result.scaling, result.scaling.problem, result.X
