@@ -121,12 +121,17 @@ class CycleMonitor:
         Convergence tolerance (None: a fixed number of cycles, no convergence or stagnation test).
     freeze : callable
         ``freeze(P)`` holds the cavitated nodes of P (and their coarse-grid injections) at P = 0.
+    start : tuple, optional
+        The watched values of the state the cycles start from (a warm start): the first cycle's change is
+        measured from it, so a start that one cycle no longer changes by more than the tolerance has converged
+        after that cycle (without: the first cycle only sets the reference, at least two cycles run).
 
     After the attempt: :attr:`residuals`, :attr:`loads`, :attr:`works` (one entry per cycle),
     :attr:`converged` and :attr:`message` (notes joined by "; ").
     """
 
-    def __init__(self, rules: MonitorRules, tolerance: float | None, freeze: Callable[[np.ndarray], None]):
+    def __init__(self, rules: MonitorRules, tolerance: float | None, freeze: Callable[[np.ndarray], None],
+                 start: tuple | None = None):
         self.rules, self.tolerance, self.freeze = rules, tolerance, freeze
         self.residuals: list[float] = []
         self.loads: list[float] = []
@@ -134,7 +139,7 @@ class CycleMonitor:
         self.changes: list[float] = []  # of H_min from cycle to cycle
         self.boundaries: list[int] = []  # the boundary measure after each cycle
         self.frozen_at = 0  # cycles run when the set was frozen (0: not frozen); stagnation counts from here
-        self.previous: tuple | None = None
+        self.previous: tuple | None = start
         self.converged = False
         self.message = ""
 

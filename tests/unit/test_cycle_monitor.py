@@ -114,6 +114,15 @@ def test_converges_on_the_second_equal_cycle_not_the_first():
     assert count == 1 and not monitor.converged
 
 
+def test_a_warm_start_that_one_cycle_does_not_change_converges_after_that_cycle():
+    """With the start's watched values given, the first cycle's change is measured from them."""
+    freezer = Freezer()
+    monitor = CycleMonitor(LINE, 1e-6, freezer, start=(0.1, -0.5 + 5e-7))
+    assert monitor.after_cycle(wet_up_to(6), (0.1, -0.5), 1e-3, 0.0, 1.0) and monitor.converged
+    monitor = CycleMonitor(LINE, 1e-6, freezer, start=(0.1, -0.5 + 5e-6))
+    assert not monitor.after_cycle(wet_up_to(6), (0.1, -0.5), 1e-3, 0.0, 1.0) and not monitor.converged
+
+
 def test_change_of_any_watched_value_blocks_convergence():
     cycles = [(wet_up_to(6), (0.1, -0.5), 1e-3, 0.0), (wet_up_to(6), (0.1, -0.5 + 2e-6), 1e-3, 0.0),
               (wet_up_to(6), (0.1, -0.5 + 2e-6 + 5e-7), 1e-3, 0.0)]

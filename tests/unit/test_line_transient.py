@@ -191,6 +191,27 @@ def test_slow_changes_approach_the_quasi_steady_films_at_first_order_in_the_rate
     assert excess[2].max() < 0.02
 
 
+def test_the_predictor_saves_cycles_and_keeps_the_films():
+    """The same ramp (u_m 5 -> 3 m/s over 40 time scales, level 6) marched from the last state and from the
+    linear extrapolation of the last two: the films agree to the tolerance's order (per-step tolerance 1e-6 on
+    H_min and H0; compared: 1e-5 relative; measured 7e-6) and the extrapolated starts need fewer cycles in all
+    (measured: 126 instead of 166)."""
+    u0 = 5.0
+    problem = LineEHLProblem.from_contact(u_m=u0, **CONTACT)
+    time_scale = TransientScaling.from_reference(u=u0, domain=problem.domain, **CONTACT).time_scale
+    times = np.linspace(0.0, 40 * time_scale, 41)
+    u = u0 * (1.0 - 0.4 * np.sin(0.5 * math.pi * times / times[-1]))
+    runs = {predictor: transient_cycle(times, CONTACT["w"], CONTACT["R"], u, E_reduced=CONTACT["E_reduced"],
+                                       eta0=CONTACT["eta0"], alpha=CONTACT["alpha"], levels=6, domain=problem.domain,
+                                       reference={"w": CONTACT["w"], "R": CONTACT["R"], "u": u0}, predictor=predictor)
+            for predictor in (False, True)}
+    assert runs[True].converged.all() and runs[False].converged.all()
+    np.testing.assert_allclose(runs[True].h_min, runs[False].h_min, rtol=1e-5)
+    np.testing.assert_allclose(runs[True].h_c, runs[False].h_c, rtol=1e-5)
+    cycles = {key: sum(record.cycles for record in run.records[1:]) for key, run in runs.items()}
+    assert cycles[True] < cycles[False]
+
+
 # ----------------------------------------------------------------------------- rigid squeeze film
 def _rigid_squeeze(scheme, steps, level=7):
     """Rigid, isoviscous, incompressible cylinder squeezing its film under constant load, u_m = 0."""
