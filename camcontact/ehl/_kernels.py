@@ -293,6 +293,21 @@ def wedge_weight(i, k, n, s, P, rho):
 
 
 @register_jitable
+def wedge_stencil(i, n, s, P, rho):
+    """The three terms of :func:`wedge_weight` at node i at once: (w0, w1, w2, m1, m2), the weights of nodes i, m1
+    and m2 (what the sweeps use: one evaluation per node instead of one per term and use)."""
+    if s == 0.0:
+        return 0.0, 0.0, 0.0, i, i
+    sigma = 1 if s > 0.0 else -1
+    if (i - 2 * sigma < 0) or (i - 2 * sigma > n - 1):
+        return 1.0, -1.0, 0.0, i - sigma, i
+    up = i - sigma
+    phi_i = 1.0 if full_film(up, P, rho) else 0.0
+    phi_up = 1.0 if full_film(up - sigma, P, rho) else 0.0
+    return 1.0 + 0.5 * phi_i, -1.0 - 0.5 * (phi_i + phi_up), 0.5 * phi_up, up, up - sigma
+
+
+@register_jitable
 def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
     """(dL_i/dP_i, dL_i/dP_{i-1}) of the discrete operator, local terms only.
 
@@ -301,7 +316,13 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
     rho(P) and on the films. ``dlx`` = d ln(xi)/dP at fixed H and ``drh`` = d rho/dP hold the
     nodal law derivatives.
     """
-    n = P.shape[0]
+    w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, rho)
+    return derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2)
+
+
+@register_jitable
+def derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2):
+    """:func:`local_derivatives` with the node's wedge stencil given (:func:`wedge_stencil`)."""
     inv_pi = 1.0 / math.pi
     hh = h * h
     left = 0.5 * (xi[i - 1] + xi[i])
@@ -325,19 +346,22 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
         d_i -= weight * dxi_dh * inv_pi * K[abs(m - i)]
         d_im1 -= weight * dxi_dh * inv_pi * K[abs(m - i + 1)]
     # wedge and squeeze: -sum_k c_k d(rho_m H_m), c_k = |s| w_k / h (+ c_t at m = i)
-    for k in range(3):
-        weight, m = wedge_weight(i, k, n, s, P, rho)
-        coefficient = abs(s) * weight / h
-        if k == 0:
-            coefficient += c_t
-        if coefficient == 0.0:
-            continue
-        d_i += inv_pi * coefficient * rho[m] * K[abs(m - i)]
-        d_im1 += inv_pi * coefficient * rho[m] * K[abs(m - i + 1)]
-        if m == i:
-            d_i -= coefficient * drh[m] * H[m]
-        elif m == i - 1:
-            d_im1 -= coefficient * drh[m] * H[m]
+    d_i, d_im1 = _wedge_term(abs(s) * w0 / h + c_t, i, i, rho, drh, H, K, inv_pi, d_i, d_im1)
+    d_i, d_im1 = _wedge_term(abs(s) * w1 / h, m1, i, rho, drh, H, K, inv_pi, d_i, d_im1)
+    return _wedge_term(abs(s) * w2 / h, m2, i, rho, drh, H, K, inv_pi, d_i, d_im1)
+
+
+@register_jitable
+def _wedge_term(coefficient, m, i, rho, drh, H, K, inv_pi, d_i, d_im1):
+    """(d_i, d_im1) plus the derivatives of the wedge/squeeze term -coefficient rho_m H_m of L_i."""
+    if coefficient == 0.0:
+        return d_i, d_im1
+    d_i += inv_pi * coefficient * rho[m] * K[abs(m - i)]
+    d_im1 += inv_pi * coefficient * rho[m] * K[abs(m - i + 1)]
+    if m == i:
+        d_i -= coefficient * drh[m] * H[m]
+    elif m == i - 1:
+        d_im1 -= coefficient * drh[m] * H[m]
     return d_i, d_im1
 
 
@@ -413,15 +437,23 @@ def nodal_laws(P, H, theta, phi, lam, viscosity_code, density_code, params, rho,
 @register_jitable
 def operator_at(i, P, H, rho, xi, h, s, c_t):
     """L_i of the module docstring (central Poiseuille, signed upwind wedge, implicit squeeze)."""
-    n = P.shape[0]
+    w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, rho)
+    return operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2)
+
+
+@register_jitable
+def operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2):
+    """:func:`operator_at` with the node's wedge stencil given (:func:`wedge_stencil`)."""
     left = 0.5 * (xi[i - 1] + xi[i])
     right = 0.5 * (xi[i] + xi[i + 1])
     poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
     wedge = 0.0
-    for k in range(3):
-        weight, m = wedge_weight(i, k, n, s, P, rho)
-        if weight != 0.0:
-            wedge += weight * rho[m] * H[m]
+    if w0 != 0.0:
+        wedge += w0 * rho[i] * H[i]
+    if w1 != 0.0:
+        wedge += w1 * rho[m1] * H[m1]
+    if w2 != 0.0:
+        wedge += w2 * rho[m2] * H[m2]
     return poiseuille - abs(s) * wedge / h - c_t * rho[i] * H[i]
 
 
@@ -493,10 +525,13 @@ def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, para
     for i in range(1, n - 1):
         coefficient = 0.5 * (xi[i - 1] + 2.0 * xi[i] + xi[i + 1]) / (h * h)
         d_integral = c_t * rho[i] * K[0]
-        for k in range(3):
-            weight, m = wedge_weight(i, k, n, s, P, rho)
-            if weight != 0.0:
-                d_integral += abs(s) * weight * rho[m] * K[abs(m - i)] / h
+        w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, rho)
+        if w0 != 0.0:
+            d_integral += abs(s) * w0 * rho[i] * K[0] / h
+        if w1 != 0.0:
+            d_integral += abs(s) * w1 * rho[m1] * K[abs(m1 - i)] / h
+        if w2 != 0.0:
+            d_integral += abs(s) * w2 * rho[m2] * K[abs(m2 - i)] / h
         jacobi[i] = coefficient < switch * abs(inv_pi * d_integral)
         if update_theta and P[i] <= 0.0:  # cavitated nodes solve for their film fraction (below)
             jacobi[i] = False
@@ -518,8 +553,9 @@ def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, para
             rho[i] = 1.0
             if dry[i]:
                 continue
-        r = f[i] - operator_at(i, P, H, rho, xi, h, s, c_t)
-        diagonal, off_diagonal = local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t)
+        w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, rho)
+        r = f[i] - operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2)
+        diagonal, off_diagonal = derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2)
         if not jacobi[i]:
             if diagonal == 0.0:
                 continue
