@@ -326,22 +326,39 @@ def level_load(P, h):
 
 
 @register_jitable
-def relax_spikes(P, H, H0, f, theta, phi, dry, h, lam, viscosity_code, density_code, params, elastic, s, c_t, drop,
-                 marked, detect):
+def find_spikes(P, viscosity_code, params, drop, marked):
+    """Mark the nodes of the pressure spikes of one level in ``marked`` (one bool per node, cleared first); True if
+    any. A spike edge is a fall of ln(eta-bar) by more than ``drop`` from node i to i + 1 (flow towards +x)
+    within two nodes of a pressure maximum (max(P_i, P_i-1, P_i-2) > P_i-3; an outlet that falls monotonically
+    is not one); its nodes i - 2 .. i + 3 are marked (:func:`relax_spikes` solves them)."""
+    n = P.shape[0]
+    found = False
+    marked[:] = False
+    here = _kernels.log_viscosity(P[4], viscosity_code, params) if n > 9 else 0.0
+    for i in range(4, n - 5):
+        below = _kernels.log_viscosity(P[i + 1], viscosity_code, params)
+        if here - below > drop and max(P[i], P[i - 1], P[i - 2]) > P[i - 3]:
+            for m in range(i - 2, i + 4):
+                marked[m] = True
+            found = True
+        here = below
+    return found
+
+
+@register_jitable
+def relax_spikes(P, H, H0, f, theta, phi, dry, h, lam, viscosity_code, density_code, params, elastic, s, c_t,
+                 marked):
     """Solve the nodes around each pressure spike of one level together, by Newton; in place on P. Returns the work
     in node updates.
 
-    A spike edge is a fall of ln(eta-bar) by more than ``drop`` from node i to i + 1 (flow towards +x) within
-    two nodes of a pressure maximum (max(P_i, P_i-1, P_i-2) > P_i-3; an outlet that falls monotonically is
-    not one). Its nodes i - 2 .. i + 3 (overlapping edges merged) are the unknowns of
+    The nodes of each run of ``marked`` (:func:`find_spikes`) are the unknowns of
     :func:`coarse_newton` on the zone i - 4 .. i + 5 without the load equation: H0 and every other pressure
     held (the two nodes on either side, because the second-order upwind wedge of the first unknown reaches two
     nodes back), the deformation of the rest of the level frozen in the zone's films, the zone's own through the
     dense K/pi. Zones with a closed film (H <= 0, a coarse grid's) or a partly filled node are left alone, as
-    is a zone whose Newton does not converge (tolerance 1e-12, 30 iterations). With ``detect`` the edges are
-    found and written to ``marked`` (one bool per node); without, the zones of ``marked`` are solved: the cycle
-    finds them after the pre-sweeps and solves the same zones after the post-sweeps (finding them anew there,
-    after the coarse-grid correction, diverged at M 5, L 30).
+    is a zone whose Newton does not converge (tolerance 1e-12, 30 iterations). The zones are those ``marked`` by
+    :func:`find_spikes`: the cycle finds them after the pre-sweeps and solves the same zones after the
+    post-sweeps (finding them anew there, after the coarse-grid correction, diverged at M 5, L 30).
 
     Why: across the Petrusevich spike of a heavily piezoviscous contact (M 5-10, L 20-30 on level 9) the
     viscosity falls by e^10 between two nodes. Point relaxation leaves errors of a node's size there, the
@@ -352,15 +369,6 @@ def relax_spikes(P, H, H0, f, theta, phi, dry, h, lam, viscosity_code, density_c
     dense Newton solution's to 1e-6; before: divergence).
     """
     n = P.shape[0]
-    if detect:
-        marked[:] = False
-        here = _kernels.log_viscosity(P[4], viscosity_code, params)
-        for i in range(4, n - 5):
-            below = _kernels.log_viscosity(P[i + 1], viscosity_code, params)
-            if here - below > drop and max(P[i], P[i - 1], P[i - 2]) > P[i - 3]:
-                for m in range(i - 2, i + 4):
-                    marked[m] = True
-            here = below
     work = 0.0
     i = 0
     while i < n:
@@ -485,10 +493,12 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
                          switch, window, 1, n - 2, dry, s, c_t, update_theta, supply)
             work += (n - 2) / n_finest
         if spike_drop > 0.0 and op != SOLVE:  # after the pre-sweeps (before the restriction) and the post-sweeps
-            H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
-                           direct_below, elastic)
-            work += relax_spikes(P, H, H0s[k], f, theta, phi, dry, h, lam, viscosity_code, density_code, params,
-                                 elastic, s, c_t, spike_drop, spikes_all[o:o + n], op == DOWN) / n_finest
+            marked = spikes_all[o:o + n]
+            if find_spikes(P, viscosity_code, params, spike_drop, marked) if op == DOWN else marked.any():
+                H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                               direct_below, elastic)
+                work += relax_spikes(P, H, H0s[k], f, theta, phi, dry, h, lam, viscosity_code, density_code, params,
+                                     elastic, s, c_t, marked) / n_finest
         if op == SOLVE:
             P_new, H0_new, iterations, status = coarse_newton(
                 P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], theta, phi, dry, h, lam, viscosity_code,
