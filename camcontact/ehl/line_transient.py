@@ -39,8 +39,10 @@ implicit BDF2 with variable steps (BDF1 on the first step, or throughout with
 ``scheme="bdf1"``); the history part of d(rho H)/dT goes into the right-hand side of the FAS
 problem, the implicit part c_t rho H into the operator
 (:mod:`camcontact.ehl._kernels`). Each step is solved by the compiled FAS cycles of
-the steady solver (same hierarchy, MLMI, coarsest-grid Newton, free-boundary rules),
-warm-started from the previous step; if a step diverges or stalls it is retried with the
+the steady solver (same hierarchy, MLMI, coarsest-grid Newton, free-boundary rules, the
+pressure spike's nodes solved together; V-cycles by default), warm-started from the linear
+extrapolation of the last two states (``predictor``) and stopped as soon as one cycle
+changes H_min and H0 by less than the tolerance; if a step diverges or stalls it is retried with the
 conservative settings of :data:`camcontact.ehl.line_multigrid.ROBUST`. Cavitation: P >= 0
 (complementarity, as in the steady solver) with, by default, a full film everywhere (the lubricant of a
 cavitated region is not tracked); with ``cavitation="mass_conserving"`` the Jakobsson–Floberg–Olsson film
@@ -271,7 +273,9 @@ class TransientLineSolver:
         load error below ten times it (reference scaling).
     settings : MultigridSettings, optional
         Cycle settings; a step that fails is retried with :data:`~.line_multigrid.ROBUST`.
-        Default: the steady defaults with the cycles' coarsest level from :func:`coarsest_level`.
+        Default: the steady defaults with V-cycles and the cycles' coarsest level from :func:`coarsest_level`
+        (a warm-started step needs little coarse-grid work; measured on the LS-1 roller turn, 720 steps, level 8,
+        5 % slip: V 16.4 s, 4.3 cycles per step, against F 22.4 s, 3.3 cycles; h_min the same to 0.002 nm).
     strict : bool
         Raise ConvergenceError for a non-converged step instead of warning.
     compiled : bool
@@ -301,7 +305,8 @@ class TransientLineSolver:
         self.scheme = scheme
         self.tolerance = float(tolerance)
         if settings is None:
-            settings = MultigridSettings(cycle_coarsest=min(coarsest_level(scaling.problem.domain), int(levels) - 1))
+            settings = MultigridSettings(cycle="V", cycle_coarsest=min(coarsest_level(scaling.problem.domain),
+                                                                       int(levels) - 1))
         self.settings = settings
         self.strict = strict
         self.compiled = compiled
