@@ -5,7 +5,8 @@ One call of :func:`fas_cycle` runs a whole V, W or F cycle: the recursion of
 operations (:func:`cycle_schedule`) — ``DOWN`` k (pre-relax level k, form the FAS coarse
 problem on k - 1), ``SOLVE`` k (coarsest grid, exactly) and ``UP`` k (correct level k from
 k - 1, post-relax) — which the kernel executes over flat per-level buffers. Relaxation, films
-(MLMI or direct), residuals and the coarsest-grid Newton solve (:func:`coarse_newton`) all run
+(MLMI or direct), residuals, the coarsest-grid Newton solve (:func:`coarse_newton`) and the local Newton
+solve at the pressure spike (:func:`find_spikes`, :func:`relax_spikes`) all run
 compiled, so a cycle costs no Python call per level visit (a W-cycle on 8 levels visits the
 coarse grids 255 times). The kernels take the operator's speed ratio s and squeeze coefficient c_t
 (:mod:`camcontact.ehl._kernels`): s = 1, c_t = 0 for the steady solver, a step's values for the
@@ -129,6 +130,10 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, phi, pinned, h, 
     |FB|^2 + load^2), written with loops so that it compiles; meant for n up to about 100
     (dense Jacobian; its deformation part is K/pi times a five-diagonal matrix, O(n^2): the local
     band spans i - 2..i + 2 for either flow direction).
+
+    Without ``load_equation`` H0 is held and only the pressures are solved for (the local spike solve,
+    :func:`relax_spikes`); with ``hold_start`` the ``pinned`` nodes are held at their start values instead of
+    at 0.
 
     Returns (P >= 0, H0, iterations, status): status 0 converged (max |FB| and |load error|
     below ``tolerance``), 1 non-finite Jacobian, 2 singular Newton matrix, 3 line search failed,
