@@ -394,9 +394,12 @@ def relax_spikes(P, H, H0, f, theta, phi, dry, h, lam, viscosity_code, density_c
             continue
         K_over_pi = np.zeros((m, m))
         if elastic:
+            table = np.empty(m)  # K(d)/pi for d = 0 .. m - 1
+            for d in range(m):
+                table[d] = kernel_value(float(d), h) / math.pi
             for q in range(m):
                 for r in range(m):
-                    K_over_pi[q, r] = kernel_value(float(abs(q - r)), h) / math.pi
+                    K_over_pi[q, r] = table[abs(q - r)]
         P_zone = P[a:b + 1].copy()
         rest = np.empty(m)  # H - H0 without the zone's own deformation
         for q in range(m):

@@ -272,30 +272,19 @@ def wedge_weight(i, k, n, s, P, rho):
     (1, -1) when the second upstream node is outside the grid; (0, i) for an unused term or s = 0. The
     limiter keeps the scheme conservative (:attr:`camcontact.ehl.line_solution.LineEHLSolution.mass_flux`).
     """
-    if s == 0.0:
-        return 0.0, i
-    sigma = 1 if s > 0.0 else -1
-    first_order = (i - 2 * sigma < 0) or (i - 2 * sigma > n - 1)
-    if first_order:
-        if k == 0:
-            return 1.0, i
-        if k == 1:
-            return -1.0, i - sigma
-        return 0.0, i
-    up = i - sigma
-    phi_i = 1.0 if full_film(up, P, rho) else 0.0
-    phi_up = 1.0 if full_film(up - sigma, P, rho) else 0.0
+    w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, rho)
     if k == 0:
-        return 1.0 + 0.5 * phi_i, i
+        return w0, i
     if k == 1:
-        return -1.0 - 0.5 * (phi_i + phi_up), up
-    return 0.5 * phi_up, up - sigma
+        return w1, m1
+    return w2, m2
 
 
 @register_jitable
 def wedge_stencil(i, n, s, P, rho):
     """The three terms of :func:`wedge_weight` at node i at once: (w0, w1, w2, m1, m2), the weights of nodes i, m1
-    and m2 (what the sweeps use: one evaluation per node instead of one per term and use)."""
+    and m2 (what the sweeps use: one evaluation per node instead of one per term and use; an unused term has
+    weight 0 at node i)."""
     if s == 0.0:
         return 0.0, 0.0, 0.0, i, i
     sigma = 1 if s > 0.0 else -1
