@@ -1,79 +1,90 @@
-"""Speed of the point-contact multigrid solver: wall time per grid, and H_c, H_min per grid.
+"""Speed of the point-contact multigrid solver against the reference C code, and what accuracy costs.
 
-Targets (issue, 2-core machine): circular contact M = 20, L = 10 (Roelands, Dowson–Higginson)
-converged on 257 x 257 in under 5 s and on 513 x 513 in under 20 s.
+Issue 19 compares camcontact with the ANSI-C FMG/MLMI point-contact solver of Venner & Lubrecht (2000)
+on the same physics: Barus viscosity, incompressible, circular (D = 1), X in [-4.5, 1.5],
+Y in [-3, 3], 17^2 coarsest grid, L = 10. The C code's wall times below were measured on this
+2-core machine kind when the issue was written (it is not part of this repository); the target is
+half of them: 513^2 M = 20 <= 2.6 s, M = 100 <= 4.1 s, M = 1000 <= 5 s; 257^2 M = 20 <= 1.1 s,
+each converged to within 0.1 % of its tightly converged H_c and H_min.
 
-    python benchmarks/point_ehl_speed.py            # 129^2, 257^2, 513^2; median of 3 runs each
-    python benchmarks/point_ehl_speed.py --quick    # 65^2, 129^2; 1 run (the tests run this)
-    python benchmarks/point_ehl_speed.py --heavy    # also M = 1000, L = 10 (incompressible) per grid
-    python benchmarks/point_ehl_speed.py --relaxation point   # the point-wise sweep instead of lines
+For each case and grid the script solves once tightly (tolerance 1e-8: the reference film) and then,
+timed (median of ``--repeats``), at the solver's default tolerance 1e-5 and at 1e-3 (the change of
+H_min, H_c and H0 per cycle; 1e-3 stops after the FMG and two cycles). Reported per row: the wall
+time, the work units (one relaxation sweep on the finest grid), the time per work unit and node,
+whether the first attempt converged, and the deviation of H_c and H_min from the tight solution.
 
-The grid-convergence columns give the change of H_c and H_min from the previous (coarser) grid.
-Numba compilation is excluded (one warm-up solve first). Prints a table and writes
-``point_ehl_speed.csv`` (and a plot with matplotlib) into ``--out``.
+    python benchmarks/point_ehl_speed.py            # 257^2 and 513^2, M = 20, 100, 1000; median of 3
+    python benchmarks/point_ehl_speed.py --quick    # 65^2 and 129^2, M = 20, one run (the tests run this)
+
+Numba compilation is excluded (a warm-up solve first). Prints a table and writes
+``point_ehl_speed.csv`` (and, with matplotlib, a plot of time against grid) into ``--out``.
 """
 
 from __future__ import annotations
 
-import argparse
-import statistics
 import sys
-import time
+import warnings
 from pathlib import Path
 
 import pandas as pd
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))  # the shared benchmarks/_output.py
 
-from _output import write_results  # noqa: E402
+from _output import arguments, timed, write_results  # noqa: E402
 
-from camcontact.ehl.point_multigrid import PointMultigridSettings, solve_point_multigrid  # noqa: E402
+from camcontact.ehl.point_multigrid import solve_point_multigrid  # noqa: E402
 from camcontact.ehl.point_problem import PointEHLProblem, point_grid_points  # noqa: E402
-from camcontact.models.film_point import nijenbanning_film  # noqa: E402
 
-TARGETS = {5: 5.0, 6: 20.0}  #: level -> target wall time [s]
+#: the C code's wall times [s] per (level, M), measured on this machine kind (issue 19); M = 1000 took
+#: 10-17 s (4-6 W-cycles per level; the lower end is used)
+C_CODE = {(6, 20): 5.2, (6, 100): 8.2, (6, 1000): 10.0, (5, 20): 2.2}
+#: issue 19's targets [s]: at most half of the C code's time
+TARGETS = {(6, 20): 2.6, (6, 100): 4.1, (6, 1000): 5.0, (5, 20): 1.1}
+TOLERANCES = (1e-5, 1e-3)
 
 
 def main(argv: list[str] | None = None) -> pd.DataFrame:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true")
-    parser.add_argument("--repeats", type=int, default=None)
-    parser.add_argument("--out", default=str(Path(__file__).parent / "results"))
-    parser.add_argument("--heavy", action="store_true", help="also M = 1000, L = 10 (incompressible)")
-    parser.add_argument("--relaxation", choices=("line", "point"), default="line")
-    args = parser.parse_args(argv)
-    levels = (3, 4) if args.quick else (4, 5, 6)
-    repeats = args.repeats or (1 if args.quick else 3)
-    settings = PointMultigridSettings(relaxation=args.relaxation)
-    cases = [("M = 20, L = 10", PointEHLProblem(M=20, L=10))]
-    if args.heavy:
-        cases.append(("M = 1000, L = 10, incompressible", PointEHLProblem(M=1000, L=10, density="incompressible")))
-    solve_point_multigrid(cases[0][1], 2, settings=settings)  # compile / load the kernels
+    args = arguments(__doc__, "65^2 and 129^2, M = 20, one run", argv)
+    levels, masses = ((3, 4), (20.0,)) if args.quick else ((5, 6), (20.0, 100.0, 1000.0))
+    repeats = 1 if args.quick else args.repeats
+    solve_point_multigrid(PointEHLProblem(M=20, L=10), 2)  # compile / load the kernels
     rows = []
-    for label, problem in cases:
-        previous = None
+    for M in masses:
+        problem = PointEHLProblem(M=M, L=10, viscosity="barus", density="incompressible")
         for level in levels:
-            times, solution = [], None
-            for _ in range(repeats):
-                start = time.perf_counter()
-                solution = solve_point_multigrid(problem, level, settings=settings)
-                times.append(time.perf_counter() - start)
-            hc, hmin = solution.moes_film()
-            rows.append({
-                "problem": label, "relaxation": args.relaxation, "level": level,
-                "nodes per direction": point_grid_points(level), "median time [s]": statistics.median(times),
-                "target [s]": TARGETS.get(level, float("nan")) if problem.M == 20 else float("nan"),
-                "cycles": solution.record.cycles, "work units": solution.record.work_units[-1],
-                "converged": solution.record.converged, "H_c": solution.H_c, "H_min": solution.H_min,
-                "H_c Moes": hc, "H_min Moes": hmin,
-                "H_c Nijenbanning": float(nijenbanning_film(problem.M, problem.L, problem.D)),
-                "load error": solution.record.load_errors[-1],
-                "change H_c [%]": 100 * (solution.H_c / previous["H_c"] - 1) if previous else float("nan"),
-                "change H_min [%]": 100 * (solution.H_min / previous["H_min"] - 1) if previous else float("nan"),
-            })
-            previous = rows[-1]
+            with warnings.catch_warnings():  # a coarse grid at M = 1000 may not hold the film: reported below
+                warnings.simplefilter("ignore")
+                tight = solve_point_multigrid(problem, level, tolerance=1e-8)
+            nodes = point_grid_points(level) ** 2
+            for tolerance in TOLERANCES:
+                solution, seconds = timed(lambda: solve_point_multigrid(problem, level, tolerance=tolerance), repeats)
+                record = solution.record
+                rows.append({
+                    "M": M, "L": 10.0, "level": level, "grid": f"{point_grid_points(level)}^2",
+                    "tolerance": tolerance, "median time [s]": seconds,
+                    "C code [s]": C_CODE.get((level, M), float("nan")),
+                    "target [s]": TARGETS.get((level, M), float("nan")),
+                    "work units": record.work_units[-1], "cycles": record.cycles,
+                    "ns per node and work unit": 1e9 * seconds / (record.work_units[-1] * nodes),
+                    "converged": record.converged, "first attempt": not record.message,
+                    "H_c": solution.H_c, "H_min": solution.H_min,
+                    "H_c vs tight [%]": 100 * (solution.H_c / tight.H_c - 1),
+                    "H_min vs tight [%]": 100 * (solution.H_min / tight.H_min - 1),
+                    "tight converged": tight.record.converged,
+                })
     frame = pd.DataFrame(rows)
-    return write_results(frame, args.out, "point_ehl_speed", _plot, lambda f: f)
+    return write_results(frame, args.out, "point_ehl_speed", _plot, _summary)
+
+
+def _summary(frame: pd.DataFrame) -> pd.DataFrame:
+    """The table printed: per case, grid and tolerance the time, the C code's and the target, the work
+    and the accuracy; ``met``: within the target time, converged and within 0.1 % of the tight film."""
+    table = frame[["M", "grid", "tolerance", "median time [s]", "C code [s]", "target [s]", "work units", "cycles",
+                   "ns per node and work unit", "first attempt", "H_c vs tight [%]", "H_min vs tight [%]"]].copy()
+    accurate = (frame["H_c vs tight [%]"].abs() <= 0.1) & (frame["H_min vs tight [%]"].abs() <= 0.1)
+    met = (frame["median time [s]"] <= frame["target [s]"]) & accurate & frame["converged"]
+    table["met"] = [bool(m) if pd.notna(t) else "" for m, t in zip(met, frame["target [s]"])]
+    return table
 
 
 def _plot(frame: pd.DataFrame, path: Path) -> None:
@@ -82,16 +93,24 @@ def _plot(frame: pd.DataFrame, path: Path) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, ax = plt.subplots(figsize=(5, 4))
-    for label, rows in frame.groupby("problem", sort=False):
-        ax.loglog(rows["nodes per direction"] ** 2, rows["median time [s]"], "o-", label=label)
-    targets = frame.dropna(subset=["target [s]"])
-    ax.loglog(targets["nodes per direction"] ** 2, targets["target [s]"], "k_", markersize=20, label="target")
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for (M, tolerance), rows in frame.groupby(["M", "tolerance"], sort=False):
+        ax.loglog(rows["level"].map(point_grid_points) ** 2, rows["median time [s]"], "o-",
+                  label=f"camcontact M = {M:g}, tol {tolerance:g}")
+    reference = frame.dropna(subset=["C code [s]"]).drop_duplicates(["M", "level"])
+    for _, row in reference.iterrows():
+        nodes = point_grid_points(int(row["level"])) ** 2
+        ax.plot(nodes, row["C code [s]"], "kx", markersize=8)
+        ax.plot(nodes, row["target [s]"], "k_", markersize=16)
+        ax.annotate(f"C, M = {row['M']:g}", (nodes, row["C code [s]"]), textcoords="offset points", xytext=(5, 0),
+                    fontsize=7)
+    ax.plot([], [], "kx", label="C code (Venner & Lubrecht 2000)")
+    ax.plot([], [], "k_", markersize=16, label="target: half the C code")
     ax.set(xlabel="nodes", ylabel="wall time [s]",
-           title=f"point EHL multigrid ({frame['relaxation'].iloc[0]} relaxation)")
-    ax.legend()
+           title="point EHL, Barus, incompressible, L = 10 (2 cores)")
+    ax.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(path)
+    fig.savefig(path, dpi=120)
     plt.close(fig)
 
 

@@ -27,6 +27,8 @@ import math
 import numpy as np
 from numba.extending import register_jitable
 
+from ..jit import helper
+
 from . import _kernels
 from ._kernels import (deformation_direct, flow_factor, kernel_value, law_state, mlmi_apply, relax_hybrid,
                        reynolds_residual, wedge_weight)
@@ -106,7 +108,7 @@ def dense_state(P, H0, f, parabola, K_over_pi, theta, phi, h, lam, viscosity_cod
         L[i] -= f[i]
 
 
-@register_jitable
+@helper
 def fischer_burmeister(a, b):
     """(phi, d phi/da, d phi/db) of phi(a, b) = a + b - sqrt(a^2 + b^2)."""
     r = math.hypot(a, b)
@@ -324,13 +326,13 @@ def level_film(k, P, H0, n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s,
     return H
 
 
-@register_jitable
+@helper
 def level_load(P, h):
     """h sum (P_j + P_{j+1})/2 - pi/2 (trapezoidal load balance)."""
     return h * (P.sum() - 0.5 * (P[0] + P[P.shape[0] - 1])) - 0.5 * math.pi
 
 
-@register_jitable
+@helper
 def find_spikes(P, viscosity_code, params, drop, marked):
     """Mark the nodes of the pressure spikes of one level in ``marked`` (one bool per node, cleared first); True if
     any. A spike edge is a fall of ln(eta-bar) by more than ``drop`` from node i to i + 1 (flow towards +x)
@@ -338,7 +340,8 @@ def find_spikes(P, viscosity_code, params, drop, marked):
     is not one); its nodes i - 2 .. i + 3 are marked (:func:`relax_spikes` solves them)."""
     n = P.shape[0]
     found = False
-    marked[:] = False
+    for i in range(marked.shape[0]):
+        marked[i] = False
     here = _kernels.log_viscosity(P[4], viscosity_code, params) if n > 9 else 0.0
     for i in range(4, n - 5):
         below = _kernels.log_viscosity(P[i + 1], viscosity_code, params)

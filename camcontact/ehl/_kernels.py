@@ -48,7 +48,7 @@ import math
 import numpy as np
 from numba.extending import register_jitable
 
-from ..jit import compile_kernel
+from ..jit import compile_kernel, helper
 
 __all__ = ["PY", "compiled"]
 
@@ -57,7 +57,7 @@ INTERP6 = np.array([3.0, -25.0, 150.0, 150.0, -25.0, 3.0]) / 256.0
 
 
 # ----------------------------------------------------------------------------- deformation kernel
-@register_jitable
+@helper
 def _antiderivative(t):
     """F(t) = t (ln|t| - 1), an odd antiderivative of ln|t| (F(0) = 0)."""
     if t == 0.0:
@@ -65,7 +65,7 @@ def _antiderivative(t):
     return t * (math.log(abs(t)) - 1.0)
 
 
-@register_jitable
+@helper
 def kernel_value(d, h):
     """K(d) = int_{(d - 1/2) h}^{(d + 1/2) h} ln|t| dt for real d (Tsuha 2015 Eq. 5.46)."""
     return _antiderivative((d + 0.5) * h) - _antiderivative((d - 0.5) * h)
@@ -231,7 +231,7 @@ def mlmi_apply(P, h, m, c1s, c2s, weights, direct_below):
 # params = [alpha_bar, p_h/p0, alpha p0/z, z, p_h/5.9e8, 1.34]
 
 
-@register_jitable
+@helper
 def log_viscosity(P, viscosity_code, params):
     """ln(eta-bar) at dimensionless pressure P (negative P counts as 0)."""
     if P <= 0.0:
@@ -241,7 +241,7 @@ def log_viscosity(P, viscosity_code, params):
     return params[2] * math.expm1(params[3] * math.log1p(P * params[1]))
 
 
-@register_jitable
+@helper
 def density_ratio(P, density_code, params):
     if density_code == 0 or P <= 0.0:
         return 1.0
@@ -249,14 +249,14 @@ def density_ratio(P, density_code, params):
     return (1.0 + params[5] * q) / (1.0 + q)
 
 
-@register_jitable
+@helper
 def full_film(j, P, rho):
     """True where node j carries a full film: pressurised, or theta = 1 (``rho`` = theta times the density
     ratio, which is 1 at P = 0)."""
     return P[j] > 0.0 or rho[j] >= 1.0
 
 
-@register_jitable
+@helper
 def wedge_weight(i, k, n, s, P, rho):
     """(weight, node) of term k = 0, 1, 2 of the upwind wedge stencil at node i for speed ratio s.
 
@@ -280,7 +280,7 @@ def wedge_weight(i, k, n, s, P, rho):
     return w2, m2
 
 
-@register_jitable
+@helper
 def wedge_stencil(i, n, s, P, rho):
     """The three terms of :func:`wedge_weight` at node i at once: (w0, w1, w2, m1, m2), the weights of nodes i, m1
     and m2 (what the sweeps use: one evaluation per node instead of one per term and use; an unused term has
@@ -296,7 +296,7 @@ def wedge_stencil(i, n, s, P, rho):
     return 1.0 + 0.5 * phi_i, -1.0 - 0.5 * (phi_i + phi_up), 0.5 * phi_up, up, up - sigma
 
 
-@register_jitable
+@helper
 def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
     """(dL_i/dP_i, dL_i/dP_{i-1}) of the discrete operator, local terms only.
 
@@ -309,7 +309,7 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
     return derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2)
 
 
-@register_jitable
+@helper
 def derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2):
     """:func:`local_derivatives` with the node's wedge stencil given (:func:`wedge_stencil`)."""
     inv_pi = 1.0 / math.pi
@@ -340,7 +340,7 @@ def derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m
     return _wedge_term(abs(s) * w2 / h, m2, i, rho, drh, H, K, inv_pi, d_i, d_im1)
 
 
-@register_jitable
+@helper
 def _wedge_term(coefficient, m, i, rho, drh, H, K, inv_pi, d_i, d_im1):
     """(d_i, d_im1) plus the derivatives of the wedge/squeeze term -coefficient rho_m H_m of L_i."""
     if coefficient == 0.0:
@@ -355,7 +355,7 @@ def _wedge_term(coefficient, m, i, rho, drh, H, K, inv_pi, d_i, d_im1):
 
 
 # ----------------------------------------------------------------------------- EHL operator
-@register_jitable
+@helper
 def flow_factor(phi, i, log_eta):
     """(F, s) at node i with ln(eta-bar) = log_eta: the flow factor F = a sqrt(1 + Lambda^2), Lambda = k eta-bar
     (module docstring) and s = Lambda^2/(1 + Lambda^2) = d ln F / d ln eta-bar."""
@@ -367,7 +367,7 @@ def flow_factor(phi, i, log_eta):
     return phi[i, 0] * math.sqrt(1.0 + lam2), lam2 / (1.0 + lam2)
 
 
-@register_jitable
+@helper
 def nodal_coefficients(P, H, theta, phi, lam, viscosity_code, density_code, params, rho, xi):
     """Fill rho (theta times the density ratio: the content factor of the wedge) and xi = F rho_law H^3 /
     (eta lambda) (a full film's, F the node's flow factor, :func:`flow_factor`) at every node."""
@@ -379,7 +379,7 @@ def nodal_coefficients(P, H, theta, phi, lam, viscosity_code, density_code, para
         xi[i] = flow_factor(phi, i, log_eta)[0] * r * hi * hi * hi * math.exp(-log_eta) / lam
 
 
-@register_jitable
+@helper
 def law_state(p, viscosity_code, density_code, params):
     """(rho, d rho/dP, ln eta, d ln eta/dP) at P; right-hand derivatives at P = 0, none below."""
     if p < 0.0:
@@ -402,7 +402,7 @@ def law_state(p, viscosity_code, density_code, params):
     return r, d_r, log_eta, dlog_eta
 
 
-@register_jitable
+@helper
 def nodal_laws(P, H, theta, phi, lam, viscosity_code, density_code, params, rho, xi, dlx, drh):
     """:func:`nodal_coefficients` plus d ln(xi)/dP and d (theta rho)/dP (a and k of the flow factor held fixed),
     sharing one log1p and exp per node."""
@@ -423,14 +423,14 @@ def nodal_laws(P, H, theta, phi, lam, viscosity_code, density_code, params, rho,
         drh[i] = d_r * theta[i]
 
 
-@register_jitable
+@helper
 def operator_at(i, P, H, rho, xi, h, s, c_t):
     """L_i of the module docstring (central Poiseuille, signed upwind wedge, implicit squeeze)."""
     w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, rho)
     return operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2)
 
 
-@register_jitable
+@helper
 def operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2):
     """:func:`operator_at` with the node's wedge stencil given (:func:`wedge_stencil`)."""
     left = 0.5 * (xi[i - 1] + xi[i])

@@ -25,7 +25,7 @@ import numpy as np
 from numba.extending import register_jitable
 
 from ._kernels import law_state
-from ..jit import compile_kernel
+from ..jit import compile_kernel, helper
 
 __all__ = ["PY", "band_solve", "compiled", "deformation_direct_2d", "kernel_rectangle"]
 
@@ -35,7 +35,7 @@ STENCIL_DI = (0, -1, 1, 0, 0, -2)
 
 
 # ----------------------------------------------------------------------------- deformation
-@register_jitable
+@helper
 def _love(u, v):
     """f(u, v) = u asinh(v/|u|) + v asinh(u/|v|): d^2 f/du dv = 1/sqrt(u^2 + v^2), f = 0 on the axes.
 
@@ -48,7 +48,7 @@ def _love(u, v):
     return value
 
 
-@register_jitable
+@helper
 def kernel_rectangle(x, y, hx, hy):
     """int int 1/sqrt((x - s)^2 + (y - t)^2) ds dt over the cell |s| <= hx/2, |t| <= hy/2 (Love 1929)."""
     a = 0.5 * hx
@@ -76,7 +76,7 @@ def deformation_direct_2d(P, hx, hy):
 
 
 # ----------------------------------------------------------------------------- operator
-@register_jitable
+@helper
 def point_nodal(P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh):
     """rho, epsilon = rho H^3/(eta lambda), d ln(epsilon)/dP (at fixed H) and d rho/dP at every node."""
     ny, nx = P.shape
@@ -105,7 +105,7 @@ def nodal_arrays(P, H, lam, viscosity_code, density_code, params):
     return rho, eps, dle, drh
 
 
-@register_jitable
+@helper
 def point_nodal_at(j, i, P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh):
     p = P[j, i]
     gap = max(H[j, i], 0.0)  # a closed gap passes no pressure flow
@@ -122,7 +122,7 @@ def point_nodal_at(j, i, P, H, lam, viscosity_code, density_code, params, rho, e
     drh[j, i] = d_r
 
 
-@register_jitable
+@helper
 def point_operator_at(j, i, P, H, rho, eps, hx, hy):
     """L_ij (module docstring) at an interior node."""
     e = eps[j, i]
@@ -148,7 +148,7 @@ def point_residual(P, H, hx, hy, lam, viscosity_code, density_code, params, out)
                 out[j, i] = point_operator_at(j, i, P, H, rho, eps, hx, hy)
 
 
-@register_jitable
+@helper
 def pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, npat, dP, dE, dRH):
     """dL_ij/dt for the pressure change t * pw[q] at the nodes (j + pdj[q], i + pdi[q]), q < npat.
 
@@ -200,7 +200,7 @@ def pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw,
     return result - wedge / hx
 
 
-@register_jitable
+@helper
 def choose_regimes(rho, eps, hx, hy, Kd, switch, jacobi):
     """jacobi[j, i] = True where the node relaxes distributively: the Poiseuille coefficient
     sum(epsilon faces)/h^2 is below ``switch`` x the wedge's own response 1.5 rho K_00 / h_x
@@ -217,7 +217,7 @@ def choose_regimes(rho, eps, hx, hy, Kd, switch, jacobi):
             jacobi[j, i] = coefficient < switch * abs(d_wedge / hx)
 
 
-@register_jitable
+@helper
 def distributive_pattern(j, k, offset, jacobi, pdj, pdi, pw, start):
     """Write the change pattern of node (j, k) at entries start.. of (pdj, pdi, pw), offsets
     relative to column k - ``offset``: +1 at the node and, if it relaxes distributively, -1/4 at
@@ -239,7 +239,7 @@ def distributive_pattern(j, k, offset, jacobi, pdj, pdi, pw, start):
     return npat
 
 
-@register_jitable
+@helper
 def apply_distributive(P, delta, jacobi, omega_jacobi, dry):
     """P += omega delta at each distributive node and -omega delta/4 at its distributive interior
     neighbours; then P <- 0 where negative (cavitation), dry or on the boundary."""
@@ -261,7 +261,7 @@ def apply_distributive(P, delta, jacobi, omega_jacobi, dry):
                 P[j, i] = 0.0
 
 
-@register_jitable
+@helper
 def gauss_seidel_at(j, i, r, P, H, rho, eps, dle, drh, hx, hy, lam, viscosity_code, density_code, params, Kd,
                     omega_gs, pdj, pdi, pw, work_p, work_e, work_rh):
     """Point Gauss–Seidel at (j, i) with residual r: P += omega_gs r / (dL/dP), clipped at 0; the
@@ -330,7 +330,7 @@ def point_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params, Kd, 
     return count
 
 
-@register_jitable
+@helper
 def band_solve(A, rhs, m, bw, x):
     """Solve the banded system sum_c A[q, bw + c - q] x_c = rhs_q, q < m, half-bandwidth ``bw``, by
     Gaussian elimination without pivoting (A and rhs are overwritten). The line matrices of the
@@ -355,8 +355,107 @@ def band_solve(A, rhs, m, bw, x):
     return True
 
 
+@helper
+def face_sensitivities(P, H, eps, dle, nj, ni, p0, e0, scale):
+    """One Poiseuille face of L (scale 1/h^2) towards node (nj, ni): (dL/dP_n, dL/dH_n, dL/d epsilon at
+    either end, the face coefficient) for :func:`node_sensitivities`."""
+    e = eps[nj, ni]
+    h = H[nj, ni]
+    half = 0.5 * scale * (P[nj, ni] - p0)
+    face = 0.5 * (e + e0) * scale
+    return half * e * dle[nj, ni] + face, (half * 3.0 * e / h if h > 0.0 else 0.0), half, face
+
+
+@helper
+def node_sensitivities(j, i, P, H, rho, eps, dle, drh, hx, hy, a, b):
+    """The local derivatives of L_ij (module docstring) at an interior node: ``a[s]`` = dL_ij/dP and
+    ``b[s]`` = dL_ij/dH at stencil node s (:data:`STENCIL_DJ`, :data:`STENCIL_DI`), each at fixed
+    other values. epsilon = rho H^3/(eta lambda) moves with P through d ln(epsilon)/dP (``dle``) and
+    with H as 3 epsilon/H (0 for a closed gap); the wedge's rho H with P through d rho/dP (``drh``).
+    At i = 1 the wedge is first-order upwind and the sixth node (i - 2) does not exist (a[5] = b[5] = 0).
+    """
+    e0 = eps[j, i]
+    p0 = P[j, i]
+    sx = 1.0 / (hx * hx)
+    sy = 1.0 / (hy * hy)
+    a[1], b[1], half1, face1 = face_sensitivities(P, H, eps, dle, j, i - 1, p0, e0, sx)
+    a[2], b[2], half2, face2 = face_sensitivities(P, H, eps, dle, j, i + 1, p0, e0, sx)
+    a[3], b[3], half3, face3 = face_sensitivities(P, H, eps, dle, j - 1, i, p0, e0, sy)
+    a[4], b[4], half4, face4 = face_sensitivities(P, H, eps, dle, j + 1, i, p0, e0, sy)
+    gap0 = half1 + half2 + half3 + half4  # d L/d epsilon_0
+    a0 = gap0 * e0 * dle[j, i] - (face1 + face2 + face3 + face4)
+    h0 = H[j, i]
+    b0 = gap0 * 3.0 * e0 / h0 if h0 > 0.0 else 0.0
+    if i == 1:
+        a[0] = a0 - drh[j, 1] * h0 / hx
+        b[0] = b0 - rho[j, 1] / hx
+        a[1] += drh[j, 0] * H[j, 0] / hx
+        b[1] += rho[j, 0] / hx
+        a[5] = 0.0
+        b[5] = 0.0
+    else:
+        a[0] = a0 - 1.5 * drh[j, i] * h0 / hx
+        b[0] = b0 - 1.5 * rho[j, i] / hx
+        a[1] += 2.0 * drh[j, i - 1] * H[j, i - 1] / hx
+        b[1] += 2.0 * rho[j, i - 1] / hx
+        a[5] = -0.5 * drh[j, i - 2] * H[j, i - 2] / hx
+        b[5] = -0.5 * rho[j, i - 2] / hx
+
+
+@register_jitable
+def stencil_kernel_table(Kd, bw):
+    """KS[dj + 1, di + bw + 1, s] = Kd[|s_j - dj|, |s_i - di|]: the film change at stencil node s per
+    unit pressure change at (dj, di), |dj| <= 1, |di| <= bw + 1 (for :func:`response_table`)."""
+    KS = np.empty((3, 2 * bw + 3, 6))
+    for row in range(3):
+        for column in range(2 * bw + 3):
+            for s in range(6):
+                KS[row, column, s] = Kd[abs(STENCIL_DJ[s] - row + 1), abs(STENCIL_DI[s] - column + bw + 1)]
+    return KS
+
+
+@helper
+def response_table(a, b, KS, bw, G, full):
+    """G[dj + 1, di + bw + 1] = dL_ij/dP at node (j + dj, i + di), from the sensitivities of
+    :func:`node_sensitivities`: the films' response sum_s b[s] KS[dj + 1, di + bw + 1, s]
+    (:func:`stencil_kernel_table`) plus the direct a[s] where that node is stencil node s. ``full``:
+    |dj| <= 1, |di| <= bw + 1 (every pattern of a line system's column reaches only these nodes);
+    otherwise only dj = 0, |di| <= bw (enough when no column of the row relaxes distributively)."""
+    rows = range(3) if full else range(1, 2)
+    last = 2 * bw + 3 if full else 2 * bw + 2
+    first = 0 if full else 1
+    for row in rows:
+        for column in range(first, last):
+            value = 0.0
+            for s in range(6):
+                value += b[s] * KS[row, column, s]
+            G[row, column] = value
+    G[1, bw + 1] += a[0]
+    G[1, bw] += a[1]
+    G[1, bw + 2] += a[2]
+    if full:
+        G[0, bw + 1] += a[3]
+        G[2, bw + 1] += a[4]
+    G[1, bw - 1] += a[5]
+
+
+@helper
+def pattern_response(G, bw, offset, j, k, jacobi):
+    """dL/dt of the row's node for the change pattern of node (j, k) (:func:`distributive_pattern`),
+    k = i + ``offset``, from the response table G of :func:`response_table`."""
+    ny, nx = jacobi.shape
+    value = G[1, offset + bw + 1]
+    if jacobi[j, k]:
+        for q in range(4):
+            dj = STENCIL_DJ[q + 1]
+            di = STENCIL_DI[q + 1]
+            if 0 < j + dj < ny - 1 and 0 < k + di < nx - 1 and jacobi[j + dj, k + di]:
+                value -= 0.25 * G[1 + dj, offset + di + bw + 1]
+    return value
+
+
 def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params, Kd, omega_gs, omega_jacobi,
-                     switch, dry, bw):
+                     switch, dry, bw, step_limit):
     """One sweep of line relaxation along X (the entrainment direction) for L(P) = f, in place on P and H.
 
     Venner & Lubrecht (2000, §8.4) relax point contacts line by line: all nodes of a row Y_j
@@ -375,7 +474,11 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
     dry, or cavitated (P = 0) and pushed further down (f - L > 0), or whose own derivative is
     not negative, are held (delta = 0). The system is solved by :func:`band_solve`; if a pivot
     fails the row falls back to the point-wise changes r/A_ii. Gauss–Seidel nodes take
-    P += omega_gs delta at once (clipped at 0), and the films of rows j..j+2 follow through Kd;
+    P += omega_gs delta at once (clipped at 0), their change limited to |d ln(epsilon)/dP| |dP| <=
+    ``step_limit`` (a trust region: the linearisation of the exponential viscosity fails for larger
+    steps; at the outlet pressure spike of Barus M = 20, L = 10 on 513^2 unlimited steps make
+    the coarse problems blow up, a limit of 2, a factor e^2 in epsilon per sweep, converges in two
+    cycles), and the films of rows j..j+2 follow through Kd;
     distributive changes are applied after the sweep with omega_jacobi
     (:func:`apply_distributive`). Returns the number of distributive nodes.
     """
@@ -393,7 +496,10 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
     residual = np.zeros(m)
     active = np.zeros(m, dtype=np.bool_)
     change = np.zeros(nx)
-    pdj, pdi, pw, work_p, work_e, work_rh = pattern_work()
+    a = np.zeros(6)
+    b = np.zeros(6)
+    G = np.zeros((3, 2 * bw + 3))
+    KS = stencil_kernel_table(Kd, bw)
     reach = Kd.shape[1]
     count = 0
     for j in range(1, ny - 1):
@@ -405,34 +511,36 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
             active[q] = False
             if dry[j, i] or (P[j, i] <= 0.0 and r > 0.0):
                 continue
-            npat = distributive_pattern(j, i, 0, jacobi, pdj, pdi, pw, 0)
-            d = pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, npat, work_p, work_e,
-                                   work_rh)
+            node_sensitivities(j, i, P, H, rho, eps, dle, drh, hx, hy, a, b)
+            full = False
+            for k in range(max(1, i - bw), min(nx - 1, i + bw + 1)):
+                full = full or jacobi[j, k]
+            response_table(a, b, KS, bw, G, full)
+            d = pattern_response(G, bw, 0, j, i, jacobi) if full else G[1, bw + 1]
             if d < 0.0:
                 active[q] = True
                 diag[q] = d
                 any_active = True
+                for c in range(max(0, q - bw), min(m, q + bw + 1)):
+                    if full:
+                        A[q, bw + c - q] = pattern_response(G, bw, c - q, j, c + 1, jacobi)
+                    else:  # no distributive column: the patterns are single nodes
+                        A[q, bw + c - q] = G[1, c - q + bw + 1]
         if not any_active:
             continue
         for q in range(m):
-            for c in range(width):
-                A[q, c] = 0.0
             x[q] = 0.0
             if not active[q]:
+                for c in range(width):
+                    A[q, c] = 0.0
                 A[q, bw] = -1.0
                 rhs[q] = 0.0
                 continue
             rhs[q] = residual[q]
-            i = q + 1
-            for c in range(max(0, q - bw), min(m, q + bw + 1)):
-                if not active[c]:
-                    continue
-                if c == q:
-                    A[q, bw] = diag[q]
-                    continue
-                npat = distributive_pattern(j, c + 1, c - q, jacobi, pdj, pdi, pw, 0)
-                A[q, bw + c - q] = pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, npat,
-                                                      work_p, work_e, work_rh)
+            for c in range(width):
+                column = q + c - bw
+                if column < 0 or column >= m or not active[column]:
+                    A[q, c] = 0.0
         if not band_solve(A, rhs, m, bw, x):
             for q in range(m):
                 x[q] = residual[q] / diag[q] if active[q] else 0.0
@@ -446,7 +554,11 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
                 delta[j, i] = x[q]
                 count += 1
                 continue
-            new = P[j, i] + omega_gs * x[q]
+            step = omega_gs * x[q]
+            slope = abs(dle[j, i])
+            if slope * abs(step) > step_limit:  # trust region of the exponential viscosity
+                step = math.copysign(step_limit / slope, step)
+            new = P[j, i] + step
             if new < 0.0:
                 new = 0.0
             change[i] = new - P[j, i]
@@ -455,9 +567,15 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
                 moved = True
         if not moved:
             continue
+        first = nx
+        last = 0
+        for i in range(1, nx - 1):
+            if change[i] != 0.0:
+                first = min(first, i)
+                last = i
         for jj in range(j, min(j + 3, ny)):
             dj = jj - j
-            for i in range(nx):
+            for i in range(max(0, first - reach + 1), min(nx, last + reach)):
                 dh = 0.0
                 for k in range(max(1, i - reach + 1), min(nx - 1, i + reach)):
                     if change[k] != 0.0:
@@ -466,9 +584,9 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
                     continue
                 old = H[jj, i]
                 H[jj, i] = old + dh
-                if jj == j or old <= 0.0 or P[jj, i] <= 0.0:
+                if (jj == j and change[i] != 0.0) or old <= 0.0 or P[jj, i] <= 0.0:
                     point_nodal_at(jj, i, P, H, lam, viscosity_code, density_code, params, rho, eps, dle, drh)
-                else:  # P unchanged off row j: only the gap term of epsilon moves
+                else:  # P unchanged: only the gap term of epsilon moves
                     ratio = max(H[jj, i], 0.0) / old
                     eps[jj, i] *= ratio * ratio * ratio
     apply_distributive(P, delta, jacobi, omega_jacobi, dry)

@@ -56,7 +56,7 @@ import math
 import numpy as np
 from numba.extending import register_jitable
 
-from ..jit import compile_kernel
+from ..jit import compile_kernel, helper
 from ._fas_kernels import solve_dense
 
 __all__ = ["PY", "compiled"]
@@ -66,7 +66,7 @@ __all__ = ["PY", "compiled"]
 MAX_RISE = 1000.0
 
 
-@register_jitable
+@helper
 def film_state(eta, h, flux, du, tau0, limit):
     """(tau_m [Pa], Phi [-], Q [W/m^2]): mid-plane shear stress, Poiseuille flow factor and dissipation per
     unit area of a film of viscosity eta [Pa s] and thickness h [m] carrying the Poiseuille volume flux
@@ -261,7 +261,7 @@ def layer_sweep(direction, dx, h, eta_iso, flux, limit, u1, du, tau0, beta, cond
 
 
 
-@register_jitable
+@helper
 def film_fields(eta, h, flux, limit, du, tau0, tau, phi, Q):
     """:func:`film_state` at every node, in place on tau [Pa], phi [-] and Q [W/m^2]."""
     for i in range(h.shape[0]):

@@ -79,6 +79,9 @@ class PointMultigridSettings:
     omega_jacobi: float = 0.6
     #: Gauss–Seidel where sum(eps faces)/h^2 >= switch x the wedge's own response
     switch: float = 1.0
+    #: largest change of ln(epsilon) (viscosity and density) per node and line sweep at a
+    #: Gauss–Seidel node (:func:`._point_kernels.point_line_relax`); inf: no limit
+    step_limit: float = attrs.field(default=2.0, validator=attrs.validators.gt(0.0))
     h0_relaxation: float = 0.05
     max_cycles: int = 80
     #: FMG starts here (level 2: 33 x 33) from the dry Hertz pressure
@@ -112,28 +115,49 @@ def _kernel_table(nx: int, ny: int, hx: float, hy: float) -> np.ndarray:
 
 
 class _FFTDeformation:
-    """w = (2/pi^2) K * P on an ny x nx grid by zero-padded FFT convolution (exact linear convolution)."""
+    """w = (2/pi^2) K * P on an ny x nx grid by zero-padded FFT convolution (exact linear convolution).
 
-    def __init__(self, nx: int, ny: int, hx: float, hy: float, workers: int):
+    The circular convolution of length N reproduces the linear one at the grid's nodes when the
+    offsets -(n-1)..(n-1) map onto distinct slots, N >= 2n - 1. With ``zero_rim`` (the solver's
+    pressures vanish on the boundary) the two largest offsets, +-(n-1), join only boundary nodes
+    and share a slot without effect, so N >= 2n - 3 suffices: 1024 (a power of two) at n = 513
+    instead of 1080, about 20 % less time per transform. Grids under :data:`THREADED_NODES` nodes
+    per direction transform on one thread: below that the threads' start-up costs more (measured
+    0.7 ms against 0.06 ms per deformation at 17^2) than they save.
+    """
+
+    def __init__(self, nx: int, ny: int, hx: float, hy: float, workers: int, zero_rim: bool = False):
         table = _kernel_table(nx, ny, hx, hy)
-        self.shape = (scipy.fft.next_fast_len(2 * ny - 1, real=True), scipy.fft.next_fast_len(2 * nx - 1, real=True))
+        least = (2 * ny - 3, 2 * nx - 3) if zero_rim and min(nx, ny) >= 3 else (2 * ny - 1, 2 * nx - 1)
+        self.shape = tuple(scipy.fft.next_fast_len(size, real=True) for size in least)
         full = np.zeros(self.shape)
         full[:ny, :nx] = table
         full[self.shape[0] - ny + 1:, :nx] = table[1:][::-1]
         full[:, self.shape[1] - nx + 1:] = full[:, 1:nx][:, ::-1]
-        self.spectrum = scipy.fft.rfft2(full, workers=workers)
-        self.nx, self.ny, self.workers = nx, ny, workers
+        self.spectrum = scipy.fft.rfft2(full, workers=1)
+        self.nx, self.ny, self.zero_rim = nx, ny, zero_rim
+        self.workers = workers if min(nx, ny) >= THREADED_NODES else 1
         self.local = table[:4, :8].copy()  # dH/dP between nodes (|dj|, |di|) apart, for the relaxation
 
     def __call__(self, P: np.ndarray) -> np.ndarray:
+        if self.zero_rim and (P[0].any() or P[-1].any() or P[:, 0].any() or P[:, -1].any()):
+            raise ValueError("_FFTDeformation(zero_rim=True) needs zero pressures on the grid's boundary")
         spectrum = scipy.fft.rfft2(P, s=self.shape, workers=self.workers)
-        return scipy.fft.irfft2(spectrum * self.spectrum, s=self.shape, workers=self.workers)[:self.ny, :self.nx]
+        spectrum *= self.spectrum
+        return scipy.fft.irfft2(spectrum, s=self.shape, workers=self.workers)[:self.ny, :self.nx]
+
+
+#: grids with fewer nodes per direction transform on one thread (:class:`_FFTDeformation`)
+THREADED_NODES = 257
 
 
 def point_deformation_fft(P: np.ndarray, hx: float, hy: float) -> np.ndarray:
-    """Deformation (2/pi^2) sum K P of pressures P[j, i] by DC-FFT (the solver's method)."""
+    """Deformation (2/pi^2) sum K P of pressures P[j, i] by DC-FFT (the solver's method; the shorter
+    padding of :class:`_FFTDeformation` when P vanishes on the boundary)."""
+    P = np.asarray(P, dtype=float)
     ny, nx = P.shape
-    return _FFTDeformation(nx, ny, hx, hy, 1)(np.asarray(P, dtype=float))
+    zero_rim = not (P[0].any() or P[-1].any() or P[:, 0].any() or P[:, -1].any())
+    return _FFTDeformation(nx, ny, hx, hy, 1, zero_rim=zero_rim)(P)
 
 
 class _Level:
@@ -144,7 +168,8 @@ class _Level:
         self.hx = float(self.X[1] - self.X[0])
         self.hy = float(self.Y[1] - self.Y[0])
         self.geometry = 0.5 * self.X[None, :] ** 2 + 0.5 * problem.D * self.Y[:, None] ** 2
-        self.deform = _FFTDeformation(self.n, self.n, self.hx, self.hy, workers) if problem.elastic else None
+        self.deform = (_FFTDeformation(self.n, self.n, self.hx, self.hy, workers, zero_rim=True)
+                       if problem.elastic else None)
         self.Kd = self.deform.local if problem.elastic else np.zeros((4, 8))
         self.dry = np.zeros((self.n, self.n), dtype=np.bool_)  # nodes held at P = 0 (frozen cavitation)
 
@@ -183,7 +208,7 @@ class _Solver:
 
     def relax(self, k: int, P: np.ndarray, H0: float, f: np.ndarray, sweeps: int) -> None:
         level, s = self.levels[k], self.settings
-        extra = (s.band,) if s.relaxation == "line" else ()
+        extra = (s.band, s.step_limit) if s.relaxation == "line" else ()
         for _ in range(sweeps):
             H = self.film(k, P, H0)
             self._relax(P, H, f, level.hx, level.hy, self.lam, self.codes[0], self.codes[1], self.params, level.Kd,

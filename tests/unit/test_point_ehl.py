@@ -36,6 +36,25 @@ def test_fft_deformation_equals_direct_sum():
     np.testing.assert_allclose(_point_kernels.compiled("deformation_direct_2d")(P, hx, hy), direct, rtol=1e-12)
 
 
+def test_shorter_fft_padding_needs_and_uses_the_zero_rim():
+    """With zero boundary pressures the solver's transform pads to 2n - 3 (32 at n = 17 instead of 36;
+    1024 at n = 513 instead of 1080) and still equals the direct sum; a pressure on the rim takes the
+    full padding (public function) or is refused (the solver's transform)."""
+    from camcontact.ehl.point_multigrid import _FFTDeformation
+
+    _, X, Y, hx, hy, P, _ = _state(level=1, D=2.0)
+    short = _FFTDeformation(17, 17, hx, hy, 1, zero_rim=True)
+    assert short.shape == (32, 32) and _FFTDeformation(17, 17, hx, hy, 1).shape == (36, 36)
+    direct = _point_kernels.PY["deformation_direct_2d"](P, hx, hy)
+    np.testing.assert_allclose(short(P), direct, rtol=1e-12, atol=1e-13)
+    rim = P.copy()
+    rim[0, 3] = rim[7, -1] = 0.4
+    np.testing.assert_allclose(point_deformation_fft(rim, hx, hy), _point_kernels.PY["deformation_direct_2d"](rim, hx, hy),
+                               rtol=1e-12, atol=1e-13)
+    with pytest.raises(ValueError, match="zero pressures on the grid's boundary"):
+        short(rim)
+
+
 def test_deformation_of_hertz_pressure_is_the_hertz_displacement():
     """Inside the dry circular contact the displacement of the Hertz pressure is 1 - r^2/2 (Johnson §3.4,
     in these units (2/pi^2) int int P/r = 1 - (X^2 + Y^2)/2); piecewise-constant cells, 129^2."""
@@ -90,7 +109,10 @@ def _local_table(hx, hy, rows=4, columns=8):
                                        for di in range(columns)] for dj in range(rows)])
 
 
-def test_line_relaxation_twin():
+@pytest.mark.parametrize("step_limit", [math.inf, 0.05])
+def test_line_relaxation_twin(step_limit):
+    """Compiled = plain Python, with and without the trust region on ln(epsilon); the limited sweep
+    moves no pressure further than the unlimited one and somewhere less."""
     problem, X, Y, hx, hy, P, H = _state()
     f = np.zeros_like(P)
     dry = np.zeros(P.shape, dtype=bool)
@@ -98,12 +120,18 @@ def test_line_relaxation_twin():
     for kernel in (_point_kernels.PY["point_line_relax"], _point_kernels.compiled("point_line_relax")):
         Pk, Hk = P.copy(), H.copy()
         count = kernel(Pk, Hk, f, hx, hy, problem.lam, *problem.law_codes, problem.law_parameters,
-                       _local_table(hx, hy), 1.0, 0.6, 1.0, dry, 2)
+                       _local_table(hx, hy), 1.0, 0.6, 1.0, dry, 2, step_limit)
         results.append((Pk, Hk, count))
     np.testing.assert_allclose(results[1][0], results[0][0], rtol=1e-12, atol=1e-14)
     np.testing.assert_allclose(results[1][1], results[0][1], rtol=1e-12, atol=1e-14)
     assert results[0][2] == results[1][2] > 0  # both regimes occur
     assert np.all(results[0][0] >= 0) and not np.array_equal(results[0][0], P)
+    if math.isfinite(step_limit):
+        free = P.copy()
+        _point_kernels.PY["point_line_relax"](free, H.copy(), f, hx, hy, problem.lam, *problem.law_codes,
+                                              problem.law_parameters, _local_table(hx, hy), 1.0, 0.6, 1.0, dry, 2,
+                                              math.inf)
+        assert np.max(np.abs(results[0][0] - P)) < np.max(np.abs(free - P))
 
 
 def test_band_solve_against_dense_solve():
@@ -168,7 +196,7 @@ def test_relaxation_reduces_the_residual_on_one_grid():
 def test_line_relaxation_converges_on_one_grid():
     """Line sweeps alone converge the 33^2 problem at M = 20 (measured: 7e-8 after 200 sweeps, the
     point-wise sweep 5e-3): checks the line matrices' signs and the film update."""
-    assert _single_grid_reduction(20.0, "point_line_relax", (1.0, 0.6), 200, (2,)) < 1e-6
+    assert _single_grid_reduction(20.0, "point_line_relax", (1.0, 0.6), 200, (2, math.inf)) < 1e-6
 
 
 @pytest.mark.parametrize("M", [20.0, 1000.0])
@@ -177,7 +205,7 @@ def test_line_relaxation_beats_point_relaxation_per_sweep(M):
     below that of the point-wise sweep (measured: 2.6e-4 vs 7.4e-2 at M = 20, 2.4e-4 vs 6.9e-2 at
     M = 1000; asserted: at least 20x lower). At M = 1000 the 33^2 grid cannot resolve the film and both
     stall near 5e-5 later, which is why this compares the early rate."""
-    line = _single_grid_reduction(M, "point_line_relax", (1.0, 0.6), 100, (2,))
+    line = _single_grid_reduction(M, "point_line_relax", (1.0, 0.6), 100, (2, math.inf))
     point = _single_grid_reduction(M, "point_relax", (0.8, 0.4), 100)
     assert line < 0.05 * point
 
