@@ -12,10 +12,13 @@ Full Approximation Scheme on the grids n_k = 16 2^(k-1) + 1 nodes per direction
   character), cavitation by projection (P <- max(P, 0)); the films are recomputed by FFT
   convolution (DC-FFT) before every sweep. The point-wise sweep
   (:func:`._point_kernels.point_relax`, ``relaxation="point"``) remains for the last two, most
-  conservative attempts of :data:`ROBUST`. Measured (W-cycles, 257^2): M = 10..100, L = 5..10,
-  D = 0.25..4 in 2-6 cycles; L = 25 (M = 20) in 14 cycles of the second attempt (the first
-  diverges); M = 1000, L = 10 in 5-9 cycles (the point-wise sweep: 45-70, residual factor about
-  0.9 per cycle); M = 3000 in 11 (257^2) and 26 (513^2) cycles with the cavitation set frozen;
+  conservative attempts of :data:`ROBUST`. A Gauss–Seidel change is limited to a factor
+  exp(``step_limit``) of epsilon (a trust region on the exponential viscosity). Measured (W-cycles,
+  257^2): M = 10..100, L = 5..10, D = 0.25..4 in 2-6 cycles; L = 25 (M = 20) in 20 cycles of the
+  second attempt (the first stagnates); M = 1000, L = 10 in 5-9 cycles (the point-wise sweep:
+  45-70, residual factor about 0.9 per cycle); M = 3000 (Barus, incompressible) in 11 (257^2) and
+  14 (513^2) cycles of the first attempt; Barus, incompressible, M = 20, 100, 1000 at L = 10 on
+  513^2 in the first attempt (before the step limit M = 20 needed the second);
 * **cavitation boundary** — when H_min alternates from cycle to cycle while the boundary hops
   between nodes, the dry set of the finest grid (and its injections) is frozen, as in the line
   solver; an attempt whose residual has not halved in ``STAGNATION[1]`` cycles stops;

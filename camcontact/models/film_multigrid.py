@@ -189,15 +189,14 @@ class Multigrid(FilmModel):
         return {"h_c": values["h_c"], "h_min": values["h_min"], "ehl_solution": solution,
                 "convergence": solution.record, "M": problem.M, "L": problem.L}
 
-    def _thermal_films(self, problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity) -> dict:
-        """Films [m] of the thermal and/or non-Newtonian solve (:func:`camcontact.ehl.line_thermal.solve_thermal`)
-        with its isothermal Newtonian films and the solution."""
-        from ..ehl.line_thermal import ThermalLineContact, solve_thermal
+    def thermal_contact(self, problem, R, w, E_reduced, u1, u2, eta0, alpha, lubricant_state, effusivity):
+        """The :class:`~camcontact.ehl.line_thermal.ThermalLineContact` of the thermal and/or non-Newtonian solve:
+        ``problem`` (:meth:`problem`) gives the laws and domain; R [m], w [N/m], E' [Pa], surface speeds u1, u2
+        [m/s], eta0 [Pa s], alpha [1/Pa]; the lubricant's conductivity, density, specific heat and
+        thermoviscous coefficient and the surfaces' ``effusivity`` (a pair [W s^0.5/(m^2 K)]) are needed with
+        ``thermal`` (InputError naming the missing ones), the Eyring stress with ``non_newtonian``."""
+        from ..ehl.line_thermal import ThermalLineContact
 
-        if u1 is None or u2 is None or not (u1 > 0 and u2 > 0):
-            raise InputError(f"film model 'multigrid' with the thermal / non-Newtonian solver needs both surface "
-                             f"speeds > 0 (u1 = {u1!r}, u2 = {u2!r} m/s): the surfaces must move through the contact "
-                             "in the same direction")
         data = {"thermal_conductivity": getattr(lubricant_state, "thermal_conductivity", None),
                 "thermoviscous_coefficient": getattr(lubricant_state, "thermoviscous_coefficient", None),
                 "density": getattr(lubricant_state, "density", None),
@@ -215,7 +214,7 @@ class Multigrid(FilmModel):
         if self.non_newtonian and self.eyring_stress is None:
             raise InputError("film model 'multigrid' with the non_newtonian effect needs the Eyring stress "
                              "(the lubricant's eyring_stress, or an Eyring traction model)")
-        contact = ThermalLineContact(
+        return ThermalLineContact(
             R=R, w=w, E_reduced=E_reduced, u1=float(u1), u2=float(u2), eta0=eta0, alpha=float(alpha),
             beta=float(data["thermoviscous_coefficient"]), conductivity=float(data["thermal_conductivity"]),
             heat_capacity=float(data["density"]) * float(data["specific_heat"]),
@@ -224,6 +223,17 @@ class Multigrid(FilmModel):
             limiting_shear_stress=self.limiting_shear_stress, limiting_shear_slope=self.limiting_shear_slope,
             viscosity=problem.viscosity, density=problem.density, z=problem.z, p0=problem.p0, domain=problem.domain,
             elastic=problem.elastic)
+
+    def _thermal_films(self, problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity) -> dict:
+        """Films [m] of the thermal and/or non-Newtonian solve (:func:`camcontact.ehl.line_thermal.solve_thermal`)
+        with its isothermal Newtonian films and the solution."""
+        from ..ehl.line_thermal import solve_thermal
+
+        if u1 is None or u2 is None or not (u1 > 0 and u2 > 0):
+            raise InputError(f"film model 'multigrid' with the thermal / non-Newtonian solver needs both surface "
+                             f"speeds > 0 (u1 = {u1!r}, u2 = {u2!r} m/s): the surfaces must move through the contact "
+                             "in the same direction")
+        contact = self.thermal_contact(problem, R, w, E_reduced, u1, u2, eta0, alpha, lubricant_state, effusivity)
         solution = solve_thermal(contact, self.levels, thermal=self.thermal, non_newtonian=self.non_newtonian,
                                  tolerance=self.tolerance, strict=self.strict)
         scale = solution.scales["h_scale"]

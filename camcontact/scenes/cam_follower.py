@@ -21,7 +21,12 @@ entrainment reversal, :func:`camcontact.ehl.line_transient.transient_cycle`; it 
 steady film at the steadiest angle, e.g. on the base circle) and ``thermal`` (off by default: the films are
 reduced by the inlet shear-heating factor phi_T of the model slot ``thermal``, default ``"wilson_sheu"``
 with its slide-to-roll term, :func:`camcontact.models.film_thermal.thermal_reduction`; needs the
-lubricant's thermal conductivity and its temperature–viscosity coefficient).
+lubricant's thermal conductivity and its temperature–viscosity coefficient). With both ``squeeze`` and
+``thermal`` (or ``non_newtonian``) the ``multigrid`` film is the thermal (Eyring) transient itself,
+:func:`camcontact.ehl.line_thermal.thermal_transient_cycle`: the energy equation across the film and the
+surfaces' flash temperatures after every step, with ``film_temperature_rise`` [K] per angle in place of the
+formula's ``thermal_factor`` (needs the lubricant's density, specific heat, conductivity and
+temperature–viscosity coefficient and both materials' thermal data).
 """
 
 from __future__ import annotations
@@ -33,9 +38,10 @@ from ..components.cam_follower import CamFollower
 from ..contact.geometry import reduced_modulus
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
 from ..steps.contact import cycle_hertz
-from ..steps.film import film_parameter, films_of, resolve_film_model, thermal_films
+from ..steps.film import (film_parameter, films_of, resolve_film_model, solves_rheology, thermal_films,
+                          with_traction_rheology)
 from ..steps.film_cycle import (cycle_ehl_groups, cycle_inlet_thermal, numerical_film_details, quasi_steady_films,
-                                transient_films)
+                                thermal_transient_films, transient_films)
 from ..steps.forces import (FORCES_1DOF, jump_report, lumped_dynamics, minimum_spring_stiffness, normal_force,
                             prescribed_motion_forces, valve_train_natural_frequency)
 from ..steps.friction import SlotModel, cam_wear
@@ -58,7 +64,7 @@ DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard
                   "traction": None}
 PER_ANGLE = frozenset((
     "cam_angle", *FOLLOWER_KINEMATICS, *FORCES_1DOF, "normal_force", "w", "b", "p_h", "approach", "U", "G", "W", "M",
-    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_regime", "film_valid", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
+    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_temperature_rise", "film_regime", "film_valid", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
     "friction_coefficient", "friction_power", "wear_rate", "contact_open", "tangential_force", "friction_torque",
     "cam_torque_with_friction", "friction_arm", *(q for q in ROLLER_OUTPUTS if q != "roller_cycle"),
     "asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity", "mixed_valid",
@@ -121,8 +127,13 @@ def cam_follower_inputs(scene: CamFollower, effects: frozenset) -> dict[str, Any
 
 def cycle_film_steps(film_model: Any, effects: frozenset) -> list[Step]:
     """The film over the turn (quasi-steady, or transient with ``squeeze``); with ``thermal`` the film
-    step gives the isothermal films and the inlet shear-heating factor reduces them."""
+    step gives the isothermal films and the inlet shear-heating factor reduces them, unless the film model
+    solves the thermal (or non-Newtonian) film itself: the ``multigrid`` model in a transient march
+    (``squeeze``), :func:`camcontact.steps.film_cycle.thermal_transient_films`."""
     films = films_of(film_model)
+    if "squeeze" in effects and solves_rheology(film_model):
+        reads = {"extra": ("effusivity",)} if film_model.thermal else {"optional": ("effusivity",)}
+        return [Step.of(thermal_transient_films, **reads)]
     film = transient_films if "squeeze" in effects else quasi_steady_films
     if "thermal" not in effects:
         return [Step.of(film, provides=(*films, "film_regime", "film_valid", "film_solutions"))]
@@ -137,11 +148,16 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
     effects = checked_request("cam_follower", models, effects, slots=sorted(DEFAULT_MODELS),
                               supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
     chosen, models = models, {**DEFAULT_MODELS, **models}
-    film_model = resolve_film_model(models["film"], effects=effects) if scene.lubricant is not None else None
+    traction = fluid_traction_model(scene.lubricant, effects, models["traction"])
+    # the transient march solves the thermal / non-Newtonian film itself with the multigrid model (a quasi-steady
+    # turn corrects its films by the inlet shear-heating formula)
+    film_model = (with_traction_rheology(
+        resolve_film_model(models["film"], effects=effects,
+                           enable=("thermal", "non_newtonian") if "squeeze" in effects else ()), traction)
+        if scene.lubricant is not None else None)
     friction = SlotModel("friction_models", models["friction"], "friction", scene.friction_coefficient,
                          "coulomb_coefficient")
     wear = SlotModel("wear_models", models["wear"], "wear", scene.wear_coefficient, "archard_coefficient")
-    traction = fluid_traction_model(scene.lubricant, effects, models["traction"])
     steps = [
         Step.of(follower_motion), Step.of(motion_continuity), Step.of(valve_train_natural_frequency),
         Step.of(minimum_spring_stiffness), Step.of(jump_margin),
@@ -157,7 +173,7 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
     inputs = {**cam_follower_inputs(scene, effects), "film_model": film_model, "friction_model": friction,
               "wear_model": wear, "thermal_model": models["thermal"], "traction_model": traction,
               **friction_inputs(scene, effects)}
-    asked = effect_outputs(effects)
+    asked = effect_outputs(effects, solves_rheology(film_model) and "squeeze" in effects)
     return SceneGraph(kind="cam_follower", inputs=inputs, steps=tuple(steps),
                       default_outputs=DEFAULT_OUTPUTS + tuple(q for q in asked if q not in DEFAULT_OUTPUTS),
                       input_hints=HINTS, plotter=plot_cam_follower, effects=effects, index="cam_angle",

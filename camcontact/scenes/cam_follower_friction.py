@@ -34,14 +34,17 @@ from ..steps.roller import cam_friction_torque, coulomb_traction_table, roller_s
 __all__ = ["effect_outputs", "friction_inputs", "friction_steps"]
 
 
-def effect_outputs(effects: frozenset) -> tuple[str, ...]:
+def effect_outputs(effects: frozenset, solved_film: bool = False) -> tuple[str, ...]:
     """The per-angle outputs the asked-for effects add to the default report (the scene names the missing
-    input of any of them, and of the friction they change, up front instead of leaving them out)."""
+    input of any of them, and of the friction they change, up front instead of leaving them out);
+    ``solved_film``: the film model solves the thermal film itself (its film temperature rise instead of
+    the inlet formula's factor)."""
     mixed = ("asperity_load_fraction", "Lambda_mixed", "lubrication_regime", "mixed_valid") if "mixed" in effects else ()
     fluid = (("friction_force", "friction_coefficient", "friction_power", "fluid_traction_coefficient",
               "traction_regime", "traction_valid") + (("traction_temperature_rise",) if "thermal" in effects else ())
              if effects & EHL_EFFECTS else ())
-    thermal = ("thermal_factor", "thermal_valid") if "thermal" in effects else ()
+    thermal = (() if "thermal" not in effects else ("film_temperature_rise",) if solved_film
+               else ("thermal_factor", "thermal_valid"))
     return mixed + fluid + thermal
 
 

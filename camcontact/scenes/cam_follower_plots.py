@@ -1,5 +1,6 @@
 """Plots of a cam–follower cycle: SVAJ diagram, cam profile, force breakdown, Hertz pressure, film, the film
-parameter Lambda with its regime bands, and friction (force, camshaft torque) over the turn."""
+parameter Lambda with its regime bands, friction (force, camshaft torque) over the turn, and the film
+temperature rise of the thermal transient film."""
 
 from __future__ import annotations
 
@@ -19,6 +20,7 @@ PANELS = {
     "lambda": ("Lambda_min",),
     "friction": ("friction_force",),
     "stribeck": ("friction_coefficient", "Lambda_min"),
+    "film_temperature": ("film_temperature_rise",),
 }
 
 
@@ -108,6 +110,13 @@ def plot_cam_follower(result, *, panels=None, figsize=None, ax=None, fig=None, c
             _friction_panel(ax, result, degrees)
         elif panel == "stribeck":
             _stribeck_panel(ax, result)
+        elif panel == "film_temperature":
+            for label, variant_row in zip(result.variants, result.rows):
+                ax.plot(degrees, np.asarray(variant_row["film_temperature_rise"], dtype=float), label=label or None)
+            ax.set(xlabel="cam angle [deg]", ylabel="largest film temperature rise [K]",
+                   title="film temperature (thermal transient)")
+            if any(result.variants):
+                ax.legend(fontsize=8)
         elif panel == "pressure":
             ax.plot(degrees, 1e-6 * np.asarray(row["p_h"]))
             ax.set(xlabel="cam angle [deg]", ylabel="p_h [MPa]", title="Hertz pressure")

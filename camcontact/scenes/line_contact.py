@@ -31,7 +31,6 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-import attrs
 
 from ..components.line_contact import LineContact
 from ..errors import InputError
@@ -42,7 +41,8 @@ from ..steps.ehl_friction import (EHL_EFFECTS, MIXED_FRICTION_READS, contact_ehl
                                   fluid_traction_model, mixed_contact)
 from ..steps.film import (composite_roughness_step, ehl_groups, film_parameter, films_of, inlet_thermal_correction,
                           isothermal_films, line_film, lubrication_regime_step, model_name, model_reads,
-                          resolve_film_model, solved_films, solved_thermal_films, thermal_films)
+                          resolve_film_model, solved_films, solved_thermal_films, thermal_films,
+                          with_traction_rheology)
 from ..steps.kinematics import surface_kinematics
 from ..steps.lubricant import lubricant_inputs, lubricant_step
 from ..steps.stress import line_subsurface_stresses
@@ -140,13 +140,7 @@ def build_line_contact(contact: LineContact, *, models: Mapping[str, Any], effec
     traction = fluid_traction_model(contact.lubricant, effects, models.get("traction"))
     film_model = resolve_film_model(models.get("film", DEFAULT_FILM), effects=effects,
                                     enable=("thermal", "non_newtonian"))
-    if getattr(film_model, "thermal", False) is True or getattr(film_model, "non_newtonian", False) is True:
-        # the solved film's rheology is the traction model's: its Eyring stress (none: a Newtonian traction model
-        # was asked for) and its limiting shear stress, which also bounds a Newtonian film's heat
-        eyring = getattr(traction, "eyring_stress", None) if film_model.non_newtonian else None
-        film_model = attrs.evolve(film_model, non_newtonian=eyring is not None, eyring_stress=eyring,
-                                  limiting_shear_stress=getattr(traction, "limiting_shear_stress", 0.0) or 0.0,
-                                  limiting_shear_slope=getattr(traction, "limiting_shear_slope", None))
+    film_model = with_traction_rheology(film_model, traction)  # the solved film's rheology is the traction model's
     if contact.oil_layer is not None and "oil_layer" not in getattr(film_model, "optional_requires", ()):
         raise InputError(f"LineContact {contact.name!r}: oil_layer = {format_quantity(contact.oil_layer)} (a starved "
                          f"inlet) needs the film model 'multigrid', not {model_name(film_model)!r}: the film formulas "

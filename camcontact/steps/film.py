@@ -175,6 +175,25 @@ def isothermal_films(**isothermal):
     return {name.removesuffix("_isothermal"): 1.0 * value for name, value in isothermal.items()}
 
 
+def solves_rheology(film_model: Any) -> bool:
+    """Whether ``film_model`` solves the thermal or non-Newtonian film itself (the ``multigrid`` model with
+    those switched on by :func:`resolve_film_model`)."""
+    return getattr(film_model, "thermal", False) is True or getattr(film_model, "non_newtonian", False) is True
+
+
+def with_traction_rheology(film_model: Any, traction: Any) -> Any:
+    """A film model that solves the thermal / non-Newtonian film (:func:`solves_rheology`) with the rheology of
+    the scene's fluid ``traction`` model: its Eyring stress (none: a Newtonian traction model was asked for, the
+    film is then Newtonian) and its limiting shear stress, which also bounds a Newtonian film's heat; any other
+    model unchanged."""
+    if not solves_rheology(film_model):
+        return film_model
+    eyring = getattr(traction, "eyring_stress", None) if film_model.non_newtonian else None
+    return attrs.evolve(film_model, non_newtonian=eyring is not None, eyring_stress=eyring,
+                        limiting_shear_stress=getattr(traction, "limiting_shear_stress", 0.0) or 0.0,
+                        limiting_shear_slope=getattr(traction, "limiting_shear_slope", None))
+
+
 @step("film_thickness", provides=FILMS, model="thermal")
 def thermal_films(thermal_factor, **isothermal):
     """The films [m] reduced by the inlet shear-heating factor phi_T (``h_c = phi_T h_c_isothermal``, ...)."""

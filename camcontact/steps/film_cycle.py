@@ -29,7 +29,8 @@ from .kinematics import degrees_text
 
 __all__ = [
     "MIN_CHAIN", "STEADY_M_LIMIT", "chain_count", "cycle_ehl_groups", "cycle_inlet_thermal", "numerical_film_details",
-    "quasi_steady_films", "solve_chain", "solve_numerically", "spike_height", "steadiest_angle", "transient_films",
+    "march_laws", "march_order", "quasi_steady_films", "solve_chain", "solve_numerically", "spike_height",
+    "steadiest_angle", "thermal_transient_films", "transient_films",
 ]
 
 #: beyond this Moes M (entrainment speed near zero) no steady solution is attempted: the steady
@@ -172,6 +173,40 @@ def steadiest_angle(w: np.ndarray, R: np.ndarray, u: np.ndarray) -> int:
     return int(np.argmin(score))
 
 
+def march_order(cam_angle, angular_speed, w, R, u, contact_open) -> tuple[np.ndarray, np.ndarray]:
+    """(order, times [s]) of a transient march over the turn: the angles from the steadiest one
+    (:func:`steadiest_angle`) round the turn and the times of those instants; InputError unless the contact is
+    closed at every angle and the cam turns at a constant speed over at least 3 angles."""
+    theta, omega = np.asarray(cam_angle, dtype=float), float(angular_speed[0])
+    open_ = np.asarray(contact_open) | (np.asarray(w) <= 0.0)
+    if np.any(open_):
+        raise InputError(f"the squeeze (transient) film needs contact at every angle; the follower leaves the cam at "
+                         f"{degrees_text(theta[open_][:3])}: stiffen the spring or lower the speed")
+    if not np.allclose(angular_speed, omega) or theta.size < 3:
+        raise InputError("the squeeze (transient) film needs a constant cam speed and at least 3 angles over the turn")
+    start = steadiest_angle(np.asarray(w), np.asarray(R), u)
+    order = np.roll(np.arange(theta.size), -start)
+    return order, np.mod(theta[order] - theta[start], 2.0 * np.pi) / omega
+
+
+def march_laws(lubricant_state, piezoviscosity, alpha_effective) -> dict:
+    """The viscosity law keywords of a transient march: Roelands with the lubricant's z where its pressure law
+    is Roelands and piezoviscosity is on, else Barus (alpha 0 without piezoviscosity)."""
+    roelands = getattr(lubricant_state.pressure_law, "name", "roelands") == "roelands" and piezoviscosity
+    return {"alpha": alpha_effective if piezoviscosity else 0.0, "z": lubricant_state.roelands_z if roelands else None,
+            "viscosity": "roelands" if roelands else "barus"}
+
+
+def _in_order(order, *series) -> list[np.ndarray]:
+    """Arrays over the march (``order``) back in the scene's angle order."""
+    out = []
+    for values in series:
+        back = np.empty(len(values), dtype=np.asarray(values).dtype)
+        back[order] = values
+        out.append(back)
+    return out
+
+
 @step("film", provides=FILM_OUTPUTS, model=lambda film_model: f"{model_name(film_model)} (transient, squeeze)",
       version=model_version, check=check_squeeze)
 def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lubricant_state, density_law,
@@ -181,34 +216,75 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
     the steadiest angle; needs contact and a constant cam speed at every angle."""
     from ..ehl.line_transient import transient_cycle
 
-    theta, omega = np.asarray(cam_angle, dtype=float), float(angular_speed[0])
-    open_ = np.asarray(contact_open) | (np.asarray(w) <= 0.0)
-    if np.any(open_):
-        raise InputError(f"the squeeze (transient) film needs contact at every angle; the follower leaves the cam at "
-                         f"{degrees_text(theta[open_][:3])}: stiffen the spring or lower the speed")
-    if not np.allclose(angular_speed, omega) or theta.size < 3:
-        raise InputError("the squeeze (transient) film needs a constant cam speed and at least 3 angles over the turn")
     u = np.asarray(u_m, dtype=float) * film_speed_factor
-    start = steadiest_angle(np.asarray(w), np.asarray(R), u)
-    order = np.roll(np.arange(theta.size), -start)
-    times = np.mod(theta[order] - theta[start], 2.0 * np.pi) / omega
-    roelands = getattr(lubricant_state.pressure_law, "name", "roelands") == "roelands"
+    order, times = march_order(cam_angle, angular_speed, w, R, u, contact_open)
     result = transient_cycle(
-        times, np.asarray(w)[order], np.asarray(R)[order], u[order], E_reduced=E_reduced,
-        eta0=eta0, alpha=alpha_effective if piezoviscosity else 0.0,
-        z=lubricant_state.roelands_z if roelands and piezoviscosity else None,
-        viscosity="roelands" if roelands and piezoviscosity else "barus",
-        density=density_law, levels=film_model.levels, tolerance=max(film_model.tolerance, 1e-6),
-        strict=film_model.strict, cavitation=getattr(film_model, "cavitation", "reynolds"))
-    films = {"h_c": np.empty(theta.size), "h_min": np.empty(theta.size)}
-    films["h_c"][order], films["h_min"][order] = result.h_c, result.h_min
-    regime = np.empty(theta.size, dtype=object)
-    for k, i in enumerate(order):
+        times, np.asarray(w)[order], np.asarray(R)[order], u[order], E_reduced=E_reduced, eta0=eta0,
+        **march_laws(lubricant_state, piezoviscosity, alpha_effective), density=density_law,
+        levels=film_model.levels, tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict,
+        cavitation=getattr(film_model, "cavitation", "reynolds"))
+    h_c, h_min, converged = _in_order(order, result.h_c, result.h_min, np.asarray(result.converged, dtype=bool))
+    messages = _in_order(order, np.array([record.message for record in result.records], dtype=object))[0]
+    regime = np.empty(u.size, dtype=object)
+    for i in range(u.size):
         note = "transient (squeeze)" + (" at u_m = 0" if u[i] == 0.0 else "")
-        regime[i] = note if result.converged[k] else f"{note}: not converged: {result.records[k].message}"
-    valid = np.empty(theta.size, dtype=bool)
-    valid[order] = np.asarray(result.converged, dtype=bool)
-    return {**films, "film_regime": regime, "film_valid": valid, "film_solutions": [None] * theta.size}
+        regime[i] = note if converged[i] else f"{note}: not converged: {messages[i]}"
+    return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged,
+            "film_solutions": [None] * u.size}
+
+
+@step("film", provides=(*FILM_OUTPUTS, "film_temperature_rise"),
+      model=lambda film_model: f"{model_name(film_model)} (transient, squeeze, "
+                               f"{'thermal' if film_model.thermal else 'non-Newtonian'})",
+      version=model_version, check=check_squeeze)
+def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0, alpha_effective, lubricant_state,
+                            density_law, contact_open, film_speed_factor, piezoviscosity, cam_angle, angular_speed,
+                            **inputs):
+    """Films [m] over the turn from one transient march with the squeeze term and the film model's thermal and/or
+    non-Newtonian film (the ``squeeze`` effect with ``thermal`` or ``non_newtonian`` and the ``multigrid`` film;
+    :func:`camcontact.ehl.line_thermal.thermal_transient_cycle`: the energy equation across the film with the
+    surfaces' flash-temperature conduction after each step, its flow factors in the next one). The surface speeds
+    u_cam, u_follower [m/s] (times ``film_speed_factor``) heat the film; ``effusivity`` (a pair
+    [W s^0.5/(m^2 K)]) and the lubricant's thermal data are needed with ``thermal``.
+
+    ``film_temperature_rise`` [K]: the largest mean film temperature rise over the contact at each angle; NaN
+    where the energy equation cannot run (a surface at rest or moving against the entrainment: a flat face on the
+    base circle and around its reversal). The film of an angle takes the flow factors of the last angle's energy solution, so the march's
+    first angle (the steadiest one) and the angle after one without an energy solution have an isothermal film;
+    ``film_regime`` says so."""
+    from ..ehl.line_thermal import thermal_transient_cycle
+
+    u1 = np.asarray(u_cam, dtype=float) * film_speed_factor
+    u2 = np.asarray(u_follower, dtype=float) * film_speed_factor
+    u = 0.5 * (u1 + u2)
+    order, times = march_order(cam_angle, angular_speed, w, R, u, contact_open)
+    laws = march_laws(lubricant_state, piezoviscosity, alpha_effective)
+    first = order[0]
+    problem = film_model.problem(float(R[first]), float(w[first]), E_reduced, float(abs(u[first])) or 1.0, eta0,
+                                 laws["alpha"], lubricant_state, density_law)
+    # the contact's own speeds are not used by the march (any positive pair)
+    contact = film_model.thermal_contact(problem, float(R[first]), float(w[first]), E_reduced,
+                                         float(np.max(np.abs(u1))) or 1.0, float(np.max(np.abs(u2))) or 1.0, eta0,
+                                         laws["alpha"], lubricant_state, inputs.get("effusivity"))
+    result = thermal_transient_cycle(
+        times, np.asarray(w)[order], np.asarray(R)[order], u1[order], u2[order], contact=contact,
+        levels=film_model.levels, thermal=film_model.thermal, non_newtonian=film_model.non_newtonian,
+        tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict)
+    films = result.films
+    energy = np.asarray(result.thermal, dtype=bool)  # the energy equation ran after the instant's film
+    heated = np.concatenate([[False], energy[:-1]])  # the instant's film took the last instant's flow factors
+    h_c, h_min, converged, energy, heated, rise = _in_order(
+        order, films.h_c, films.h_min, np.asarray(films.converged, dtype=bool), energy, heated, result.temperature_rise)
+    messages = _in_order(order, np.array([record.message for record in films.records], dtype=object))[0]
+    kind = "thermal" if film_model.thermal else "non-Newtonian"
+    regime = np.empty(u.size, dtype=object)
+    for i in range(u.size):
+        note = (f"transient (squeeze, {kind})" if heated[i] else
+                "transient (squeeze), isothermal here: " + ("the march's start" if i == first else
+                                                            "a surface did not move with the entrainment"))
+        regime[i] = note if converged[i] else f"{note}: not converged: {messages[i]}"
+    return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged,
+            "film_solutions": [None] * u.size, "film_temperature_rise": np.where(energy, rise, np.nan)}
 
 
 def spike_height(solution) -> float:

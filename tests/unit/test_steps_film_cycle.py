@@ -8,6 +8,8 @@ film.
 """
 
 import math
+
+import attrs
 from types import SimpleNamespace
 
 import numpy as np
@@ -22,6 +24,7 @@ from camcontact.steps.film_cycle import (
     cycle_ehl_groups,
     numerical_film_details,
     quasi_steady_films,
+    thermal_transient_films,
     transient_films,
 )
 from step_checks import assert_provides
@@ -157,6 +160,38 @@ def test_transient_films_refuses_lost_contact_and_varying_speed():
     with pytest.raises(InputError, match="'squeeze' effect"):
         check_squeeze(registry.get("film_models", "pan_hamrock"))
     assert check_squeeze(model) is None
+
+
+def test_thermal_transient_films_settle_on_the_steady_thermal_film():
+    """Constant load, radius and rolling surface speeds (2 m/s) over 12 angles: the march's first film is the
+    isothermal steady one (its start; film_regime says so), and with the lagged energy coupling the films settle
+    on the steady thermal solution of the same contact (solve_thermal; last angle within 1e-4) with its film
+    temperature rise (1.66 K: rolling heats only through the inlet's back-flow shear); the step's outputs are
+    complete. (With sliding and a Newtonian film without limiting shear stress the rise runs to 100-300 K: the
+    scenes bound the film by the traction model's limiting shear stress, with_traction_rheology.)"""
+    from camcontact.ehl.line_thermal import solve_thermal
+
+    oil = cc.Lubricant(name="Tsuha 2015", alpha="2.2e-8 1/Pa", roelands_z=0.68, thermal_conductivity="0.14 W/(m*K)",
+                       thermoviscous_coefficient="0.03 1/K", specific_heat="2000 J/(kg*K)", density="870 kg/m^3")
+    state = oil.state(None)
+    model = attrs.evolve(registry.get("film_models", "multigrid", levels=5), thermal=True)
+    n, w, R, u1, u2 = 12, 1.5e5, 0.01, 2.0, 2.0
+    effusivity = (12900.0, 12900.0)
+    out = thermal_transient_films(model, np.full(n, w), np.full(n, R), E_STEEL, np.full(n, u1), np.full(n, u2),
+                                  state.eta0, state.alpha, state, "incompressible", np.zeros(n, bool), 1.0, True,
+                                  np.linspace(0, 2 * math.pi, n, endpoint=False), np.full(n, 10.0),
+                                  effusivity=effusivity)
+    assert_provides(thermal_transient_films, out)
+    problem = model.problem(R, w, E_STEEL, 0.5 * (u1 + u2), state.eta0, state.alpha, state, "incompressible")
+    contact = model.thermal_contact(problem, R, w, E_STEEL, u1, u2, state.eta0, state.alpha, state, effusivity)
+    steady = solve_thermal(contact, 5, tolerance=1e-8)
+    start = int(np.flatnonzero([r.endswith("the march's start") for r in out["film_regime"]])[0])
+    assert out["h_c"][start] == pytest.approx(steady.isothermal.H_c * steady.scales["h_scale"], rel=1e-4)
+    last = (start - 1) % n  # the march goes round from its start
+    assert out["h_c"][last] == pytest.approx(steady.h_c, rel=1e-4)
+    assert out["h_c"][last] < out["h_c"][start]  # the heated film is thinner
+    assert out["film_temperature_rise"][last] == pytest.approx(steady.max_temperature_rise, rel=1e-3)
+    assert out["film_valid"].all()
 
 
 # ----------------------------------------------------------------------------- numerical_film_details
