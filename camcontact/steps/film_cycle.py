@@ -248,10 +248,11 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     [W s^0.5/(m^2 K)]) and the lubricant's thermal data are needed with ``thermal``.
 
     ``film_temperature_rise`` [K]: the largest mean film temperature rise over the contact at each angle; NaN
-    where the energy equation cannot run (a surface at rest or moving against the entrainment: a flat face on the
-    base circle and around its reversal). The film of an angle takes the flow factors of the last angle's energy solution, so the march's
-    first angle (the steadiest one) and the angle after one without an energy solution have an isothermal film;
-    ``film_regime`` says so."""
+    where the energy equation cannot run (a surface at rest or moving against the entrainment: a flat face on
+    the base circle and around its reversal) and everywhere without ``thermal`` (an isothermal Eyring march).
+    The film of an angle takes the flow factors of the last angle's solution across the film, so the march's
+    first angle (the steadiest one) and the angle after one without such a solution have an isothermal
+    (Newtonian) film; ``film_regime`` says so."""
     from ..ehl.line_thermal import thermal_transient_cycle
 
     u1 = np.asarray(u_cam, dtype=float) * film_speed_factor
@@ -280,11 +281,12 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     regime = np.empty(u.size, dtype=object)
     for i in range(u.size):
         note = (f"transient (squeeze, {kind})" if heated[i] else
-                "transient (squeeze), isothermal here: " + ("the march's start" if i == first else
-                                                            "a surface did not move with the entrainment"))
+                f"transient (squeeze), {'isothermal' if film_model.thermal else 'Newtonian'} here: "
+                + ("the march's start" if i == first else "a surface did not move with the entrainment"))
         regime[i] = note if converged[i] else f"{note}: not converged: {messages[i]}"
     return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged,
-            "film_solutions": [None] * u.size, "film_temperature_rise": np.where(energy, rise, np.nan)}
+            "film_solutions": [None] * u.size,
+            "film_temperature_rise": np.where(energy & film_model.thermal, rise, np.nan)}
 
 
 def spike_height(solution) -> float:

@@ -112,6 +112,7 @@ def test_non_newtonian_squeeze_film_is_the_eyring_march(scene):
     assert [r.model for r in eyring.records if r.step == "film"] == ["multigrid (transient, squeeze, non-Newtonian)"]
     ratio = np.asarray(eyring["h_min"], dtype=float) / np.asarray(newtonian["h_min"], dtype=float)
     assert np.all(np.abs(ratio - 1.0) < 0.02)
+    assert np.all(np.isnan(np.asarray(eyring["film_temperature_rise"], dtype=float)))  # no energy equation
 
 
 def test_flat_follower_heats_only_where_both_surfaces_move_with_the_entrainment(scene):
