@@ -469,8 +469,10 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
 
         sum_k dL_ji/d(pattern of k) delta_k = f_ji - L_ji,   |k - i| <= bw,
 
-    the exact local linearisation (:func:`pattern_derivative`, film changes through the
-    deformation coefficients Kd, which must reach |di| <= bw + 3 and |dj| <= 2). Nodes that are
+    the exact local linearisation (film changes through the deformation coefficients Kd, which must
+    reach |di| <= bw + 3 and |dj| <= 2), assembled per node from dL/dP and dL/dH at its six stencil
+    nodes (:func:`node_sensitivities`, :func:`response_table`, :func:`pattern_response`; the same
+    derivatives as :func:`pattern_derivative` column by column, at a fraction of the cost). Nodes that are
     dry, or cavitated (P = 0) and pushed further down (f - L > 0), or whose own derivative is
     not negative, are held (delta = 0). The system is solved by :func:`band_solve`; if a pivot
     fails the row falls back to the point-wise changes r/A_ii. Gauss–Seidel nodes take

@@ -134,6 +134,40 @@ def test_line_relaxation_twin(step_limit):
         assert np.max(np.abs(results[0][0] - P)) < np.max(np.abs(free - P))
 
 
+@pytest.mark.parametrize("switch", [1.0, 1e6])
+def test_line_matrix_from_sensitivities_equals_pattern_derivatives(switch):
+    """The line relaxation's matrix rows, assembled from the stencil nodes' dL/dP and dL/dH
+    (node_sensitivities, response_table, pattern_response), equal pattern_derivative's column-by-column
+    linearisation for every interior node of a pressurised state and every column |offset| <= 2, with
+    Gauss–Seidel and (switch 1e6: every node) distributive patterns, and with the reduced table where no
+    column of the row is distributive (to 1e-12)."""
+    problem, X, Y, hx, hy, P, H = _state()
+    K = _point_kernels
+    ny, nx = P.shape
+    bw = 2
+    Kd = _local_table(hx, hy)
+    rho, eps, dle, drh = K.nodal_arrays(P, H, problem.lam, *problem.law_codes, problem.law_parameters)
+    jacobi = np.zeros(P.shape, dtype=bool)
+    K.choose_regimes(rho, eps, hx, hy, Kd, switch, jacobi)
+    KS = K.stencil_kernel_table(Kd, bw)
+    a, b, G = np.zeros(6), np.zeros(6), np.zeros((3, 2 * bw + 3))
+    pdj, pdi, pw, work_p, work_e, work_rh = K.pattern_work()
+    got, expected = [], []
+    for j in range(1, ny - 1):
+        for i in range(1, nx - 1):
+            K.node_sensitivities(j, i, P, H, rho, eps, dle, drh, hx, hy, a, b)
+            full = bool(jacobi[j, max(1, i - bw):min(nx - 1, i + bw + 1)].any())
+            K.response_table(a, b, KS, bw, G, full)
+            for c in range(max(1, i - bw), min(nx - 1, i + bw + 1)):
+                npat = K.distributive_pattern(j, c, c - i, jacobi, pdj, pdi, pw, 0)
+                expected.append(K.pattern_derivative(j, i, P, H, rho, eps, dle, drh, hx, hy, Kd, pdj, pdi, pw, npat,
+                                                     work_p, work_e, work_rh))
+                got.append(K.pattern_response(G, bw, c - i, j, c, jacobi) if full else G[1, c - i + bw + 1])
+    expected = np.array(expected)
+    assert expected.size > 1000 and jacobi.any()
+    np.testing.assert_allclose(got, expected, rtol=1e-12, atol=1e-13 * np.abs(expected).max())
+
+
 def test_band_solve_against_dense_solve():
     """The banded elimination of the line systems equals numpy's dense solve on a negative
     diagonally dominant band matrix, and refuses a matrix whose pivot is not negative."""
