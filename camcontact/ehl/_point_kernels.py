@@ -595,6 +595,26 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
     return count
 
 
+def spike_zone(P, viscosity_code, density_code, params, drop, mask):
+    """mask[j, i] = True at the nodes i - 2 .. i + 2 of rows j - 1 .. j + 1 around every fall of ln(eta) by more
+    than ``drop`` from node (j, i) to (j, i + 1): the outlet pressure spike, where the viscosity falls by orders
+    of magnitude within a node (the multigrid cycle keeps the coarse grids out of it with
+    ``PointMultigridSettings.spike_mask``). False elsewhere."""
+    ny, nx = P.shape
+    for j in range(ny):
+        for i in range(nx):
+            mask[j, i] = False
+    for j in range(ny):
+        here = law_state(P[j, 0], viscosity_code, density_code, params)[2]
+        for i in range(nx - 1):
+            below = law_state(P[j, i + 1], viscosity_code, density_code, params)[2]
+            if here - below > drop:
+                for jj in range(max(j - 1, 0), min(j + 2, ny)):
+                    for ii in range(max(i - 2, 0), min(i + 3, nx)):
+                        mask[jj, ii] = True
+            here = below
+
+
 # ----------------------------------------------------------------------------- grid transfers
 def restrict_full_weighting(r, out):
     """out (coarse, (n+1)/2 per direction) = 9-point full weighting of the fine residual r at interior
@@ -635,6 +655,7 @@ PY = {
     "point_residual": point_residual,
     "point_relax": point_relax,
     "point_line_relax": point_line_relax,
+    "spike_zone": spike_zone,
     "band_solve": band_solve,
     "deformation_direct_2d": deformation_direct_2d,
     "restrict_full_weighting": restrict_full_weighting,
