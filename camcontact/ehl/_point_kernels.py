@@ -24,7 +24,7 @@ import math
 import numpy as np
 from numba.extending import register_jitable
 
-from ._kernels import law_state
+from ._kernels import law_state, log_viscosity
 from ..jit import compile_kernel, helper
 
 __all__ = ["PY", "band_solve", "compiled", "deformation_direct_2d", "kernel_rectangle"]
@@ -595,19 +595,20 @@ def point_line_relax(P, H, f, hx, hy, lam, viscosity_code, density_code, params,
     return count
 
 
-def spike_zone(P, viscosity_code, density_code, params, drop, mask):
+def spike_zone(P, viscosity_code, params, drop, mask):
     """mask[j, i] = True at the nodes i - 2 .. i + 2 of rows j - 1 .. j + 1 around every fall of ln(eta) by more
     than ``drop`` from node (j, i) to (j, i + 1): the outlet pressure spike, where the viscosity falls by orders
     of magnitude within a node (the multigrid cycle keeps the coarse grids out of it with
-    ``PointMultigridSettings.spike_mask``). False elsewhere."""
+    ``PointMultigridSettings.spike_mask``; the line solver's twin is :func:`._fas_kernels.find_spikes`). False
+    elsewhere."""
     ny, nx = P.shape
     for j in range(ny):
         for i in range(nx):
             mask[j, i] = False
     for j in range(ny):
-        here = law_state(P[j, 0], viscosity_code, density_code, params)[2]
+        here = log_viscosity(P[j, 0], viscosity_code, params)
         for i in range(nx - 1):
-            below = law_state(P[j, i + 1], viscosity_code, density_code, params)[2]
+            below = log_viscosity(P[j, i + 1], viscosity_code, params)
             if here - below > drop:
                 for jj in range(max(j - 1, 0), min(j + 2, ny)):
                     for ii in range(max(i - 2, 0), min(i + 3, nx)):

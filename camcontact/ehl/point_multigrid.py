@@ -263,7 +263,7 @@ class _Solver:
         spike = None
         if s.spike_mask > 0.0:
             spike = np.empty(P.shape, dtype=np.bool_)
-            self._spike_zone(P, self.codes[0], self.codes[1], self.params, s.spike_mask, spike)
+            self._spike_zone(P, self.codes[0], self.params, s.spike_mask, spike)
             r[spike] = 0.0
         r_load = f_load - self.load(k, P)
         Pc = np.ascontiguousarray(P[::2, ::2])

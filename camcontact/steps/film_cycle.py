@@ -259,14 +259,15 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     u2 = np.asarray(u_follower, dtype=float) * film_speed_factor
     u = 0.5 * (u1 + u2)
     order, times = march_order(cam_angle, angular_speed, w, R, u, contact_open)
-    laws = march_laws(lubricant_state, piezoviscosity, alpha_effective)
+    alpha = alpha_effective if piezoviscosity else 0.0
     first = order[0]
+    # the model's problem gives the contact its laws (as the steady thermal solve's)
     problem = film_model.problem(float(R[first]), float(w[first]), E_reduced, float(abs(u[first])) or 1.0, eta0,
-                                 laws["alpha"], lubricant_state, density_law)
+                                 alpha, lubricant_state, density_law)
     # the contact's own speeds are not used by the march (any positive pair)
     contact = film_model.thermal_contact(problem, float(R[first]), float(w[first]), E_reduced,
                                          float(np.max(np.abs(u1))) or 1.0, float(np.max(np.abs(u2))) or 1.0, eta0,
-                                         laws["alpha"], lubricant_state, inputs.get("effusivity"))
+                                         alpha, lubricant_state, inputs.get("effusivity"))
     result = thermal_transient_cycle(
         times, np.asarray(w)[order], np.asarray(R)[order], u1[order], u2[order], contact=contact,
         levels=film_model.levels, thermal=film_model.thermal, non_newtonian=film_model.non_newtonian,

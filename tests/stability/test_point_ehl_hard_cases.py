@@ -40,7 +40,7 @@ def test_spike_zone_marks_the_fall_of_the_viscosity_and_its_twin():
     masks = []
     for kernel in (_point_kernels.PY["spike_zone"], _point_kernels.compiled("spike_zone")):
         mask = np.ones(P.shape, dtype=bool)
-        kernel(P, *problem.law_codes, problem.law_parameters, 2.0, mask)
+        kernel(P, problem.law_codes[0], problem.law_parameters, 2.0, mask)
         masks.append(mask)
     np.testing.assert_array_equal(masks[0], masks[1])
     expected = np.zeros(P.shape, dtype=bool)
