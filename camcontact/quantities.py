@@ -43,6 +43,7 @@ _NAN_WHEN = {
     **{q: (("contact_open", True),) for q in ("h_c", "h_min", "Lambda_c", "Lambda_min", "h_c_isothermal",
                                               "h_min_isothermal")},
     "spike_pressure": (("pressure_spike", False),),
+    "film_temperature_rise": (("film_thermal", False),),
     "friction_coefficient": (("friction_valid", False),),
     "friction_coefficient_inner": (("friction_valid_inner", False),),
     "friction_coefficient_outer": (("friction_valid_outer", False),),
@@ -375,6 +376,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("surface_temperature_max", "K", "degC", "maximum surface temperature T + T_F (Eq. 47)"),
         _q("viscosity_at_mean_pressure", "Pa*s", "Pa*s", "viscosity at the mean Hertz pressure (Roelands)"),
         _q("film_temperature_rise", "K", "K", "mid-film Couette temperature rise above the surface"),
+        _q("film_thermal", None, None, "True where the film's energy equation ran at the angle (thermal transient: "
+                                       "both surfaces move with the entrainment); False: no film temperature"),
         _q("lubricant_temperature_max", "K", "degC", "lubricant's maximum temperature (thesis: the rise read as a temperature)"),
         _q("lubricant_temperature_check", None, None, "maximum lubricant temperature against the upper service limit"),
         _q("yield_check", None, None, "plastic-deformation check of the subsurface shear"),

@@ -24,9 +24,10 @@ with its slide-to-roll term, :func:`camcontact.models.film_thermal.thermal_reduc
 lubricant's thermal conductivity and its temperature–viscosity coefficient). With both ``squeeze`` and
 ``thermal`` (or ``non_newtonian``) the ``multigrid`` film is the thermal (Eyring) transient itself,
 :func:`camcontact.ehl.line_thermal.thermal_transient_cycle`: the energy equation across the film and the
-surfaces' flash temperatures after every step, with ``film_temperature_rise`` [K] per angle in place of the
-formula's ``thermal_factor`` (needs the lubricant's density, specific heat, conductivity and
-temperature–viscosity coefficient and both materials' thermal data).
+surfaces' flash temperatures after every step, with ``film_temperature_rise`` [K] per angle (and
+``film_thermal``, where the energy equation ran) in place of the formula's ``thermal_factor`` (needs the
+lubricant's density, specific heat, conductivity and temperature–viscosity coefficient and both materials'
+thermal data).
 """
 
 from __future__ import annotations
@@ -64,7 +65,7 @@ DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard
                   "traction": None}
 PER_ANGLE = frozenset((
     "cam_angle", *FOLLOWER_KINEMATICS, *FORCES_1DOF, "normal_force", "w", "b", "p_h", "approach", "U", "G", "W", "M",
-    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_temperature_rise", "film_regime", "film_valid", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
+    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_temperature_rise", "film_thermal", "film_regime", "film_valid", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
     "friction_coefficient", "friction_power", "wear_rate", "contact_open", "tangential_force", "friction_torque",
     "cam_torque_with_friction", "friction_arm", *(q for q in ROLLER_OUTPUTS if q != "roller_cycle"),
     "asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity", "mixed_valid",

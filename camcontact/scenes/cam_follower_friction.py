@@ -43,7 +43,7 @@ def effect_outputs(effects: frozenset, solved_film: bool = False) -> tuple[str, 
     fluid = (("friction_force", "friction_coefficient", "friction_power", "fluid_traction_coefficient",
               "traction_regime", "traction_valid") + (("traction_temperature_rise",) if "thermal" in effects else ())
              if effects & EHL_EFFECTS else ())
-    thermal = (() if "thermal" not in effects else ("film_temperature_rise",) if solved_film
+    thermal = (() if "thermal" not in effects else ("film_temperature_rise", "film_thermal") if solved_film
                else ("thermal_factor", "thermal_valid"))
     return mixed + fluid + thermal
 

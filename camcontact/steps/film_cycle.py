@@ -233,7 +233,7 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
             "film_solutions": [None] * u.size}
 
 
-@step("film", provides=(*FILM_OUTPUTS, "film_temperature_rise"),
+@step("film", provides=(*FILM_OUTPUTS, "film_temperature_rise", "film_thermal"),
       model=lambda film_model: f"{model_name(film_model)} (transient, squeeze, "
                                f"{'thermal' if film_model.thermal else 'non-Newtonian'})",
       version=model_version, check=check_squeeze)
@@ -249,7 +249,8 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
 
     ``film_temperature_rise`` [K]: the largest mean film temperature rise over the contact at each angle; NaN
     where the energy equation cannot run (a surface at rest or moving against the entrainment: a flat face on
-    the base circle and around its reversal) and everywhere without ``thermal`` (an isothermal Eyring march).
+    the base circle and around its reversal) and everywhere without ``thermal`` (an isothermal Eyring march);
+    ``film_thermal`` (bool) says where it ran.
     The film of an angle takes the flow factors of the last angle's solution across the film, so the march's
     first angle (the steadiest one) and the angle after one without such a solution have an isothermal
     (Newtonian) film; ``film_regime`` says so."""
@@ -287,7 +288,8 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
         regime[i] = note if converged[i] else f"{note}: not converged: {messages[i]}"
     return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged,
             "film_solutions": [None] * u.size,
-            "film_temperature_rise": np.where(energy & film_model.thermal, rise, np.nan)}
+            "film_temperature_rise": np.where(energy & film_model.thermal, rise, np.nan),
+            "film_thermal": energy & film_model.thermal}
 
 
 def spike_height(solution) -> float:

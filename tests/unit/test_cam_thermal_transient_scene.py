@@ -16,6 +16,7 @@ import camcontact as cc
 from camcontact.ehl.line_thermal import ThermalLineContact, thermal_transient_cycle
 from camcontact.errors import InputError, StepFailureWarning
 from camcontact.models.film_multigrid import Multigrid
+from camcontact.report import unexplained_values
 from camcontact.scene_file import load_scene
 from camcontact.steps.film_cycle import march_order
 
@@ -121,12 +122,14 @@ def test_flat_follower_heats_only_where_both_surfaces_move_with_the_entrainment(
     elsewhere and the next angle's film is isothermal, which film_regime says; the films stay finite."""
     flat = attrs.evolve(scene, follower=cc.Follower.flat(material=scene.follower.material),
                         cam=attrs.evolve(scene.cam, base_radius="49.7494 mm"))
-    result = cc.Analysis(flat, outputs=["u_cam", "u_follower", "h_min", "film_regime", "film_temperature_rise"],
-                         models={"film": FILM}, effects=BASE | {"thermal"}).run()
+    result = cc.Analysis(flat, outputs=["u_cam", "u_follower", "h_min", "film_regime", "film_temperature_rise",
+                                        "film_thermal"], models={"film": FILM}, effects=BASE | {"thermal"}).run()
     u1, u2, rise = (np.asarray(result[k], dtype=float) for k in ("u_cam", "u_follower", "film_temperature_rise"))
     moving = (u1 > 0) & (u2 > 0)
     assert moving.any() and not moving.all()
     np.testing.assert_array_equal(np.isfinite(rise), moving)
+    np.testing.assert_array_equal(np.asarray(result["film_thermal"], dtype=bool), moving)  # the status beside it
+    assert unexplained_values(result.to_frame()) == []  # every NaN has its reason beside it
     assert np.all(rise[moving] > 0.0) and np.isfinite(np.asarray(result["h_min"], dtype=float)).all()
     regimes = np.asarray(result["film_regime"], dtype=str)
     assert (np.char.find(regimes, "a surface did not move with the entrainment") >= 0).sum() > 0
