@@ -354,6 +354,21 @@ def find_spikes(P, viscosity_code, params, drop, marked):
 
 
 @register_jitable
+def deformation_change(H, change, K_table, targets):
+    """H_i -= (1/pi) sum_j K(|i - j|) change_j at the nodes i with ``targets`` set (one level; ``K_table`` its
+    K(0 .. n - 1)): the exact film update for a pressure change, over the nonzero entries of ``change`` only
+    (work: targets x changed nodes). The cycle updates a level's film with it where a full evaluation would be
+    wasted: after the spike zones' Newton solve (a few nodes change) and for the films of the spike zones after
+    the post-sweeps (a few targets)."""
+    sources = np.flatnonzero(change != 0.0)
+    for i in np.flatnonzero(targets):
+        value = 0.0
+        for j in sources:
+            value += K_table[abs(i - j)] * change[j]
+        H[i] -= value / math.pi
+
+
+@register_jitable
 def relax_spikes(P, H, H0, f, theta, phi, dry, h, lam, viscosity_code, density_code, params, elastic, s, c_t,
                  marked):
     """Solve the nodes around each pressure spike of one level together, by Newton; in place on P. Returns the work
@@ -425,7 +440,7 @@ def relax_spikes(P, H, H0, f, theta, phi, dry, h, lam, viscosity_code, density_c
 
 def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi_all, n_of, offsets, h_of, parabola,
               K_local, mlmi_on, m_of, c1s, c2s, weights, direct_below, K_dense, lam, viscosity_code, density_code, params,
-              elastic, real_settings, int_settings, s, c_t, mass_conserving, supply):
+              elastic, real_settings, int_settings, s, c_t, mass_conserving, supply, K_tables):
     """Execute one cycle ``schedule`` (:func:`cycle_schedule`) in place on the level buffers, for the
     operator of speed ratio s and squeeze coefficient c_t (steady: s = 1, c_t = 0).
 
@@ -497,19 +512,41 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
             P[0] = 0.0
             P[n - 1] = 0.0
             H0s[k] = H0s[k - 1]
-        for _ in range(sweeps):
+        K_table = K_tables[o:o + n]
+        marked = spikes_all[o:o + n]
+        H_before = np.empty(0)  # the film the last sweep started from, and its pressures
+        P_before = np.empty(0)
+        for sweep in range(sweeps):
             H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                            direct_below, elastic)
+            if op == UP and sweep == sweeps - 1 and spike_drop > 0.0 and marked.any():
+                H_before = H.copy()
+                P_before = P.copy()
             relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi,
                          switch, window, 1, n - 2, dry, s, c_t, update_theta, supply)
             work += (n - 2) / n_finest
+        film_now = np.empty(0)  # this level's film of its current pressures, when the spike solve leaves it
         if spike_drop > 0.0 and op != SOLVE:  # after the pre-sweeps (before the restriction) and the post-sweeps
-            marked = spikes_all[o:o + n]
             if find_spikes(P, viscosity_code, params, spike_drop, marked) if op == DOWN else marked.any():
-                H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
-                               direct_below, elastic)
+                if H_before.shape[0] == n:  # only the zones' films are read: the last sweep's film plus its change
+                    H = H_before
+                    zones = np.zeros(n, dtype=np.bool_)
+                    for i in range(n):
+                        if marked[i]:
+                            for q in range(max(i - 2, 0), min(i + 2, n - 1) + 1):
+                                zones[q] = True
+                    if elastic:
+                        deformation_change(H, P - P_before, K_table, zones)
+                else:
+                    H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                                   direct_below, elastic)
+                P_spikes = P.copy()
                 work += relax_spikes(P, H, H0s[k], f, theta, phi, dry, h, lam, viscosity_code, density_code, params,
                                      elastic, s, c_t, marked) / n_finest
+                if op == DOWN:  # the restriction's film: the full film plus the change of the zones' pressures
+                    film_now = H
+                    if elastic:
+                        deformation_change(film_now, P - P_spikes, K_table, np.ones(n, dtype=np.bool_))
         if op == SOLVE:
             P_new, H0_new, iterations, status = coarse_newton(
                 P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], theta, phi, dry, h, lam, viscosity_code,
@@ -528,8 +565,11 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
                     work += (n - 2) / n_finest
                     H0s[k] += h0_relaxation * (level_load(P, h) - loads[k])
         elif op == DOWN:  # the FAS problem of level k - 1
-            H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
-                           direct_below, elastic)
+            if film_now.shape[0] == n:
+                H = film_now
+            else:
+                H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                               direct_below, elastic)
             r = np.empty(n)
             reynolds_residual(P, H, theta, phi, h, lam, viscosity_code, density_code, params, s, c_t, r)
             for i in range(n):
@@ -566,7 +606,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     return work
 
 
-PY = {"coarse_newton": coarse_newton, "fas_cycle": fas_cycle}
+PY = {"coarse_newton": coarse_newton, "deformation_change": deformation_change, "fas_cycle": fas_cycle}
 
 
 def compiled(name: str):

@@ -60,7 +60,8 @@ solved by :func:`camcontact.ehl.line_starved.solve_starved`.
 Every solve returns a :class:`~camcontact.ehl.line_solution.ConvergenceRecord` (residual and
 load error per cycle, work units, wall time, converged flag, notes). Not converged: a
 :class:`~camcontact.errors.ConvergenceWarning`, or :class:`~camcontact.errors.ConvergenceError`
-with ``strict=True``; a non-finite state always raises, so no NaN is ever returned.
+with ``strict=True``; a non-finite or runaway state (:data:`RUNAWAY_RESIDUAL`) always raises, so no NaN or
+absurd film is ever returned.
 """
 
 from __future__ import annotations
@@ -79,7 +80,7 @@ from .deformation import DIRECT_BELOW, Deformation
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
 from .line_solution import ConvergenceRecord, LineEHLSolution
 
-__all__ = ["MONITOR_RULES", "LineHierarchy", "MultigridSettings", "solve_multigrid"]
+__all__ = ["MONITOR_RULES", "RUNAWAY_RESIDUAL", "LineHierarchy", "MultigridSettings", "solve_multigrid"]
 
 
 @attrs.frozen
@@ -185,6 +186,8 @@ class LineHierarchy:
             n = levels[k].n
             table = kernel_coefficients(levels[k].h, n)
             self.K_dense[k, :n, :n] = table[np.abs(np.arange(n)[:, None] - np.arange(n)[None, :])] / math.pi
+        #: K(0 .. n - 1) of every level, flat like the pressures (the cycles' exact film updates for local changes)
+        self.K_tables = np.concatenate([kernel_coefficients(level.h, level.n) for level in levels])
         total = int(self.n_of.sum())
         self.P_all, self.P_old, self.f_all = np.zeros(total), np.zeros(total), np.zeros(total)
         self.dry_all = np.zeros(total, dtype=np.bool_)
@@ -295,7 +298,7 @@ class LineHierarchy:
             self.phi_all, self.n_of, self.offsets, self.h_of, self.parabola, self.K_local, self.mlmi_on, self.m_of,
             self.c1s, self.c2s, _kernels.INTERP6, DIRECT_BELOW, self.K_dense, self.lam, self.viscosity_code,
             self.density_code, self.params, self.problem.elastic, self.real_settings, self.int_settings, self.s, self.c_t,
-            self.mass_conserving, self.supply,
+            self.mass_conserving, self.supply, self.K_tables,
         )
         return self.P_all[o:o + n].copy(), float(self.H0s[k])
 
@@ -411,7 +414,7 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
                     start: float) -> LineEHLSolution:
     """Cycles on the finest grid of ``solver`` from (P, H0) until :data:`MONITOR_RULES` stop them; the
     solution with its record (wall time counted from ``start``, a :func:`time.perf_counter` value).
-    Raises ConvergenceError on a non-finite state."""
+    Raises ConvergenceError on a non-finite state or a runaway one (:data:`RUNAWAY_RESIDUAL`)."""
     problem, settings, levels = solver.problem, solver.settings, len(solver.levels)
     finest = solver.levels[-1]
     zero = np.zeros(finest.n)
@@ -427,8 +430,14 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
             )
         r = solver.residual(finest, P, H)
         r = np.where((P > 0.0) | (solver.theta(finest) < 1.0), r, np.maximum(r, 0.0))
-        if watch.after_cycle(P, solver.watched(finest, P, H, H0), float(np.mean(np.abs(r[1:-1])) * finest.h),
-                             solver.load(finest, P), solver.work):
+        residual = float(np.mean(np.abs(r[1:-1])) * finest.h)
+        if residual > RUNAWAY_RESIDUAL:
+            raise ConvergenceError(
+                f"line EHL multigrid diverged (M = {problem.M:.4g}, L = {problem.L:.4g}): residual {residual:.3g} "
+                f"(H0 = {H0:.4g}, H_min = {H.min():.4g}): a runaway state",
+                _record(solver, watch.residuals, watch.loads, watch.works, start, False, "runaway state", tolerance),
+            )
+        if watch.after_cycle(P, solver.watched(finest, P, H, H0), residual, solver.load(finest, P), solver.work):
             break
     else:
         watch.out_of_cycles(settings.max_cycles)
@@ -439,6 +448,10 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
         wants = (solver.residual(finest, P, H_check) > 0.0) & solver.dry[finest.k]
         message += f"; {int(wants.sum())} frozen dry nodes would take pressure" if wants.any() else "; complementarity holds"
     H = solver.film(finest, P, H0)
+    if H.min() <= 0.0:  # a solution of the discrete equations, not of the contact: say so
+        message = (message + "; " if message else "") + (
+            f"the discrete film closes (H_min = {H.min():.3g} <= 0): the grid is too coarse for this film, "
+            "refine it (more levels)")
     record = _record(solver, residuals, loads, works, start, converged, message, tolerance)
     theta = solver.theta(finest).copy() if solver.mass_conserving else None
     phi = solver.flow_factor(finest)
@@ -446,6 +459,12 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
     return LineEHLSolution(problem=problem, level=int(levels), X=finest.X, P=P, H=H, H0=float(H0), record=record,
                            settings=settings, theta=theta, flow_factor=None if plain else phi.copy())
 
+
+#: a finest-grid residual above this is a runaway state, however finite: an attempt that reaches it has diverged
+#: (measured over the Moes map of ``benchmarks/stability_map.py``: converging cases start below 1e-2; M = 3000,
+#: L = 0 on level 9, whose discrete film closes, ran off to residuals of 1e39-1e169 with H0 ~ 1e36 and, finite,
+#: was kept as the attempt with the smallest residual)
+RUNAWAY_RESIDUAL = 1e6
 
 _MAX_START_LEVEL = 6  # the dense start solver stays below ~1 s
 

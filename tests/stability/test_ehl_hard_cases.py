@@ -137,3 +137,33 @@ def test_cycles_keep_a_converged_spike_only_with_the_spike_solve():
         moved[drop] = float(np.max(np.abs(P - solution.P))) if np.all(np.isfinite(P)) else np.inf
     assert moved[default] < 1e-6
     assert moved[0.0] > 1e-2
+
+
+def test_runaway_state_raises_instead_of_being_kept():
+    """M = 3000, L = 0 (isoviscous, film ~4e-5 Hertz units) on level 8: every attempt runs off (residuals of
+    1e10-1e158, H0 ~ 1e38, finite). Before the runaway rule the last attempt's finite absurd state was kept as the
+    one with the smallest residual (H_min 1e36 with a warning); now the solve fails loudly with its record."""
+    problem = LineEHLProblem(M=3000, L=0, alpha=2.2e-8, z=0.68, pressure_scale=1e9)
+    with pytest.raises(ConvergenceError, match="runaway state") as caught:
+        solve_multigrid(problem, 8)
+    assert "every attempt diverged" in str(caught.value)
+
+
+def test_runaway_rule_fires_above_its_residual(monkeypatch):
+    """The rule itself: with the limit set below an easy case's residuals, every attempt stops at its first cycle
+    as a runaway (the record kept, no solution returned)."""
+    from camcontact.ehl import line_multigrid
+
+    monkeypatch.setattr(line_multigrid, "RUNAWAY_RESIDUAL", 1e-30)
+    with pytest.raises(ConvergenceError, match="runaway state") as caught:
+        solve_multigrid(LineEHLProblem(M=20, L=10, alpha=1.7e-8, z=0.68), 6)
+    assert caught.value.record is not None and caught.value.record.cycles == 0
+
+
+def test_a_closed_discrete_film_is_said():
+    """M = 3000, L = 0 on level 6 converges to a discrete solution whose film closes (H_min < 0): a solution of
+    the discrete equations, not of the contact. The record says so and how to fix it."""
+    problem = LineEHLProblem(M=3000, L=0, alpha=2.2e-8, z=0.68, pressure_scale=1e9)
+    solution = solve_multigrid(problem, 6)
+    assert solution.H_min < 0
+    assert "the discrete film closes" in solution.record.message and "more levels" in solution.record.message

@@ -95,6 +95,30 @@ def test_mlmi_twin_equals_compiled():
                                rtol=1e-12, atol=1e-14)
 
 
+@pytest.mark.parametrize("compiled", [False, True])
+def test_film_update_for_a_local_pressure_change_equals_the_direct_film(compiled):
+    """The cycle's exact film update (``deformation_change``): H at the target nodes moves by -(1/pi) K dP, as the
+    direct deformation of the changed pressures says; other nodes keep their film. Both uses of the cycle: a few
+    changed nodes into every target (after the spike zones' Newton solve), every changed node into a few targets
+    (the zones' films after the post-sweeps)."""
+    from camcontact.ehl import _fas_kernels
+
+    kernel = _kernels.compiled("deformation_change", _fas_kernels.PY) if compiled else _fas_kernels.deformation_change
+    _, X, h, P, H = _state()
+    n = X.size
+    table = kernel_coefficients(h, n)
+    direct = Deformation(n, h, "direct")
+    rng = np.random.default_rng(3)
+    for changed, targets in ((np.isin(np.arange(n), [40, 41, 42, 60]), np.ones(n, dtype=bool)),
+                             (P > 0, np.isin(np.arange(n), [50, 51, 52, 53, 99]))):
+        change = np.where(changed, 0.01 * rng.standard_normal(n), 0.0)
+        updated = H.copy()
+        kernel(updated, change, table, targets)
+        expected = H - direct(change) / math.pi
+        np.testing.assert_allclose(updated[targets], expected[targets], rtol=0, atol=1e-14)
+        np.testing.assert_array_equal(updated[~targets], H[~targets])
+
+
 def test_closed_gap_passes_no_pressure_flow():
     """Where the film is closed (H <= 0, e.g. on a coarse grid too coarse for a very thin film)
     xi = rho H^3/(eta lambda) is 0, not negative: the numpy operator, the Python kernel and the
