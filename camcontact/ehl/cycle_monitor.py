@@ -6,7 +6,9 @@ and decides:
 
 * **converged** — the largest change of the watched values since the previous cycle below the
   tolerance (relative to max(|value|, ``scale_floor``) of one watched value, or absolute) and the
-  load error below ``load_factor`` max(tolerance, ``load_floor``);
+  load error below ``load_factor`` max(tolerance, ``load_floor``); with ``estimate_remaining`` also when
+  fast cycles leave less than that to change (the last change times rate/(1 - rate), a geometric
+  sequence's remainder; the a-posteriori estimate of the remaining change);
 * **stagnated** — :func:`stagnated`: the residual has not halved in the last ``window`` cycles
   (counted since the freeze below);
 * **freeze** — once, when H_min alternates from cycle to cycle (:func:`alternating`) while the
@@ -109,6 +111,16 @@ class MonitorRules:
     scale_floor: float = attrs.field(default=0.01, validator=attrs.validators.gt(0.0))
     boundary: str = attrs.field(default="last_pressurised", validator=attrs.validators.in_(tuple(BOUNDARY_MEASURES)))
     freeze_needs_tolerance: bool = True
+    #: also converged when the cycles contract fast: the last change times rate/(1 - rate), the remaining change
+    #: of a geometric sequence with the rate = last change / the one before, is below the limit, with rate <= 0.5
+    #: and the last change below 10 x the limit (:data:`FAST_RATE`, :data:`FAST_REACH`); never stricter than the
+    #: change test
+    estimate_remaining: bool = False
+
+
+#: the largest contraction rate per cycle, and the largest multiple of the limit a last change may have, for which
+#: :attr:`MonitorRules.estimate_remaining` extrapolates the remaining change
+FAST_RATE, FAST_REACH = 0.5, 3.0
 
 
 class CycleMonitor:
@@ -140,6 +152,7 @@ class CycleMonitor:
         self.boundaries: list[int] = []  # the boundary measure after each cycle
         self.frozen_at = 0  # cycles run when the set was frozen (0: not frozen); stagnation counts from here
         self.previous: tuple | None = start
+        self.last_change: float | None = None  # the largest watched change of the previous cycle
         self.converged = False
         self.message = ""
 
@@ -195,6 +208,11 @@ class CycleMonitor:
     def _converged(self, watched: tuple, previous: tuple, tolerance: float) -> bool:
         rules = self.rules
         change = max(abs(now - before) for now, before in zip(watched, previous))
+        before, self.last_change = self.last_change, change
         limit = tolerance if rules.relative_to is None else tolerance * max(abs(watched[rules.relative_to]),
                                                                              rules.scale_floor)
-        return change < limit and abs(self.loads[-1]) < max(tolerance, rules.load_floor) * rules.load_factor
+        settled = change < limit
+        if not settled and rules.estimate_remaining and before:
+            rate = change / before
+            settled = rate <= FAST_RATE and change < FAST_REACH * limit and change * rate / (1.0 - rate) < limit
+        return settled and abs(self.loads[-1]) < max(tolerance, rules.load_floor) * rules.load_factor

@@ -241,8 +241,17 @@ def coarsest_level(domain) -> int:
 
 
 #: the stop rules of a step's cycles: the steady solver's without its load floor (converged when the
-#: changes of (H_min, H0) fall below the tolerance and the load error below 10 x the tolerance)
-MONITOR_RULES = attrs.evolve(STEADY_RULES, load_floor=0.0)
+#: changes of (H_min, H0) fall below the tolerance and the load error below 10 x the tolerance), and with the
+#: estimate of the remaining change (a step whose cycles contract fast stops when what they would still change is
+#: below the tolerance; measured on the LS-1 flat-follower turn, 720 steps at level 8, tolerance 1e-5: 5.7 -> 4.4 s,
+#: h_min over the turn 145.063 -> 145.016 nm). The steady solver keeps the plain change test: its tests hold the
+#: default tolerance to pressures equal to the dense Newton solution's to 1e-7 and a fixed point to 1e-6, which
+#: the earlier stop misses at the spike (2e-7, 5e-6) since the watched films settle before the spike's pressures
+MONITOR_RULES = attrs.evolve(STEADY_RULES, load_floor=0.0, estimate_remaining=True)
+#: the stop rules of a step with mass-conserving cavitation: the plain change test (its lubricant content, watched,
+#: settles irregularly; measured: with the estimate a step of the reversal march balanced its lubricant 5.3e-4 of
+#: the inflow off, against the 5e-4 the plain test keeps)
+MASS_CONSERVING_RULES = attrs.evolve(MONITOR_RULES, estimate_remaining=False)
 
 
 @attrs.frozen
@@ -512,7 +521,8 @@ class TransientLineSolver:
         finest = hierarchy.levels[-1]
         k = len(hierarchy.levels) - 1
         tol = self.tolerance
-        watch = CycleMonitor(MONITOR_RULES, tol, hierarchy.freeze_dry,
+        rules = MONITOR_RULES if not hierarchy.mass_conserving else MASS_CONSERVING_RULES
+        watch = CycleMonitor(rules, tol, hierarchy.freeze_dry,
                              start=hierarchy.watched(finest, P, hierarchy.film(finest, P, H0), H0))
         work0 = hierarchy.work
         for _ in range(settings.max_cycles):

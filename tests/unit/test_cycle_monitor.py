@@ -6,6 +6,7 @@ freeze), the freeze of the cavitation set (alternating H_min with a moving bound
 with the line rules and tolerance None), the messages and their order.
 """
 
+import attrs
 import numpy as np
 import pytest
 
@@ -100,7 +101,9 @@ def test_rules_are_validated():
 def test_the_solvers_rules():
     assert (LINE.stagnation, LINE.load_factor, LINE.load_floor, LINE.relative_to) == ((10, 5), 10.0, 1e-9, None)
     assert LINE.boundary == "last_pressurised" and LINE.freeze_needs_tolerance
-    assert TRANSIENT == MonitorRules(stagnation=(10, 5), load_factor=10.0, load_floor=0.0)
+    assert TRANSIENT == MonitorRules(stagnation=(10, 5), load_factor=10.0, load_floor=0.0, estimate_remaining=True)
+    assert not LINE.estimate_remaining and not POINT.estimate_remaining
+    assert line_transient.MASS_CONSERVING_RULES == attrs.evolve(TRANSIENT, estimate_remaining=False)
     assert (POINT.stagnation, POINT.load_factor, POINT.load_floor, POINT.relative_to) == ((20, 10), 1.0, 0.0, 1)
     assert POINT.scale_floor == 0.01 and POINT.boundary == "wet_count" and not POINT.freeze_needs_tolerance
 
@@ -251,3 +254,31 @@ def test_stagnation_counts_from_the_freeze_and_the_messages_join_in_order():
     assert len(freezer.calls) == 1 and count == 14
     assert monitor.message == ("cavitation set frozen after cycle 4 (boundary oscillation); "
                                "stagnated: residual not halved in the last 5 cycles")
+
+
+def contracting(rate, first=1e-3, n=12):
+    """H_min approaching 0.1 geometrically: the change of cycle k is first * rate^k."""
+    values = 0.1 - first * rate ** np.arange(n) / (1.0 - rate)
+    return [(wet_up_to(6), (float(v), -0.5), 1e-3 * rate**k, 0.0) for k, v in enumerate(values)]
+
+
+def test_the_remaining_change_estimate_stops_fast_cycles_earlier_never_slow_ones():
+    """With ``estimate_remaining`` a sequence contracting by 0.2 per cycle stops when change * 0.2/0.8 < tolerance
+    (and the change is below 3 x the tolerance): changes 1e-3, 2e-4, 4e-5, 8e-6, 1.6e-6, 3.2e-7 stop at 1.6e-6
+    (remainder 4e-7 < 1e-6) instead of at 3.2e-7 (the plain test); a slow sequence (rate 0.8) stops where the plain
+    test does, and a fast one (rate 0.01) only once its change is below FAST_REACH x the tolerance."""
+    from camcontact.ehl.cycle_monitor import FAST_RATE, FAST_REACH
+
+    assert (FAST_RATE, FAST_REACH) == (0.5, 3.0)
+    estimating = attrs.evolve(LINE, estimate_remaining=True)
+    plain, _, plain_count = run(LINE, 1e-6, contracting(0.2))
+    fast, _, fast_count = run(estimating, 1e-6, contracting(0.2))
+    assert plain.converged and fast.converged and (plain_count, fast_count) == (7, 6)
+    assert fast.last_change == pytest.approx(1e-3 * 0.2**4)
+    _, _, slow_plain = run(LINE, 1e-6, contracting(0.8, n=60))
+    _, _, slow_estimating = run(estimating, 1e-6, contracting(0.8, n=60))
+    assert slow_plain == slow_estimating
+    # rate 0.01 from 2e-2: changes 2e-2, 2e-4, 2e-6 (< 3e-6: stops), 2e-8 (the plain test's stop)
+    assert [run(rules, 1e-6, contracting(0.01, first=2e-2))[2] for rules in (LINE, estimating)] == [5, 4]
+    # from 5e-2: the change 5e-6 is beyond 3 x 1e-6, so both stop at the change 5e-8
+    assert [run(rules, 1e-6, contracting(0.01, first=5e-2))[2] for rules in (LINE, estimating)] == [5, 5]

@@ -194,8 +194,10 @@ def test_slow_changes_approach_the_quasi_steady_films_at_first_order_in_the_rate
 def test_the_predictor_saves_cycles_and_keeps_the_films():
     """The same ramp (u_m 5 -> 3 m/s over 40 time scales, level 6) marched from the last state and from the
     linear extrapolation of the last two: the films agree to the tolerance's order (per-step tolerance 1e-6 on
-    H_min and H0; compared: 1e-5 relative; measured 7e-6) and the extrapolated starts need fewer cycles in all
-    (measured: 126 instead of 166)."""
+    H_min and H0, whose remaining change a step estimates from its last two changes, :data:`MONITOR_RULES`;
+    compared: 5e-5 relative; measured 1.3e-5 (h_min) and 2.3e-5 (h_c), against 3.3e-6 and 7.6e-6 with the plain
+    change test) and the extrapolated starts need fewer cycles in all (measured: 145 instead of 229; with the
+    plain change test 161 instead of 258)."""
     u0 = 5.0
     problem = LineEHLProblem.from_contact(u_m=u0, **CONTACT)
     time_scale = TransientScaling.from_reference(u=u0, domain=problem.domain, **CONTACT).time_scale
@@ -206,8 +208,8 @@ def test_the_predictor_saves_cycles_and_keeps_the_films():
                                        reference={"w": CONTACT["w"], "R": CONTACT["R"], "u": u0}, predictor=predictor)
             for predictor in (False, True)}
     assert runs[True].converged.all() and runs[False].converged.all()
-    np.testing.assert_allclose(runs[True].h_min, runs[False].h_min, rtol=1e-5)
-    np.testing.assert_allclose(runs[True].h_c, runs[False].h_c, rtol=1e-5)
+    np.testing.assert_allclose(runs[True].h_min, runs[False].h_min, rtol=5e-5)
+    np.testing.assert_allclose(runs[True].h_c, runs[False].h_c, rtol=5e-5)
     cycles = {key: sum(record.cycles for record in run.records[1:]) for key, run in runs.items()}
     assert cycles[True] < cycles[False]
 
