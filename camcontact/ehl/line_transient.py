@@ -244,9 +244,8 @@ def coarsest_level(domain) -> int:
 #: changes of (H_min, H0) fall below the tolerance and the load error below 10 x the tolerance), and with the
 #: estimate of the remaining change (a step whose cycles contract fast stops when what they would still change is
 #: below the tolerance; measured on the LS-1 flat-follower turn, 720 steps at level 8, tolerance 1e-5: 5.7 -> 4.4 s,
-#: h_min over the turn 145.063 -> 145.016 nm). The steady solver keeps the plain change test: its tests hold the
-#: default tolerance to pressures equal to the dense Newton solution's to 1e-7 and a fixed point to 1e-6, which
-#: the earlier stop misses at the spike (2e-7, 5e-6) since the watched films settle before the spike's pressures
+#: h_min over the turn 145.063 -> 145.016 nm), as a warm-started steady solve
+#: (:data:`camcontact.ehl.line_multigrid.WARM_RULES`)
 MONITOR_RULES = attrs.evolve(STEADY_RULES, load_floor=0.0, estimate_remaining=True)
 #: the stop rules of a step with mass-conserving cavitation: the plain change test (its lubricant content, watched,
 #: settles irregularly; measured: with the estimate a step of the reversal march balanced its lubricant 5.3e-4 of

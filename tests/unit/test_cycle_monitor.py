@@ -104,6 +104,7 @@ def test_the_solvers_rules():
     assert TRANSIENT == MonitorRules(stagnation=(10, 5), load_factor=10.0, load_floor=0.0, estimate_remaining=True)
     assert not LINE.estimate_remaining and not POINT.estimate_remaining
     assert line_transient.MASS_CONSERVING_RULES == attrs.evolve(TRANSIENT, estimate_remaining=False)
+    assert line_multigrid.WARM_RULES == attrs.evolve(LINE, estimate_remaining=True)
     assert (POINT.stagnation, POINT.load_factor, POINT.load_floor, POINT.relative_to) == ((20, 10), 1.0, 0.0, 1)
     assert POINT.scale_floor == 0.01 and POINT.boundary == "wet_count" and not POINT.freeze_needs_tolerance
 
