@@ -458,6 +458,10 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     Newtonian film; see :mod:`camcontact.ehl._kernels`), given on every level (the hierarchy restricts the finest
     level's, :meth:`camcontact.ehl.line_multigrid.LineHierarchy.set_flow_factor`).
 
+    ``K_tables`` holds K(0 .. n - 1) of every level, flat like the pressures: with it the spike zones' Newton solve
+    costs no extra full film (:func:`deformation_change`: after the pre-sweeps the restriction takes the spike
+    film updated for the zones' change, after the post-sweeps only the zones' films are formed).
+
     ``theta_all`` holds the film fractions per level (all 1 for the classical operator). With
     ``mass_conserving`` the sweeps of the cycle's top level solve for theta where P = 0 with the inlet
     ``supply`` (:func:`camcontact.ehl._kernels.relax_hybrid`); the coarse levels take theta by injection as a
