@@ -113,7 +113,7 @@ class MonitorRules:
     freeze_needs_tolerance: bool = True
     #: also converged when the cycles contract fast: the last change times rate/(1 - rate), the remaining change
     #: of a geometric sequence with the rate = last change / the one before, is below the limit, with rate <= 0.5
-    #: and the last change below 10 x the limit (:data:`FAST_RATE`, :data:`FAST_REACH`); never stricter than the
+    #: and the last change below 3 x the limit (:data:`FAST_RATE`, :data:`FAST_REACH`); never stricter than the
     #: change test
     estimate_remaining: bool = False
 

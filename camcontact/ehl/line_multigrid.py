@@ -421,7 +421,7 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled, factors
 
 def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance: float | None,
                     start: float, reference: tuple | None = None, rules: MonitorRules | None = None) -> LineEHLSolution:
-    """Cycles on the finest grid of ``solver`` from (P, H0) until :data:`MONITOR_RULES` stop them; the
+    """Cycles on the finest grid of ``solver`` from (P, H0) until ``rules`` (None: :data:`MONITOR_RULES`) stop them; the
     solution with its record (wall time counted from ``start``, a :func:`time.perf_counter` value). ``reference``:
     the watched values of the start state, from which the first cycle's change is measured (None: from the first
     cycle on).

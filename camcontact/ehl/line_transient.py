@@ -75,7 +75,7 @@ import numpy as np
 from ..errors import ConvergenceError, ConvergenceWarning, InputError
 from .attempts import run_ladder
 from .cycle_monitor import CycleMonitor
-from .line_multigrid import MONITOR_RULES as STEADY_RULES
+from .line_multigrid import WARM_RULES
 from .line_multigrid import ROBUST, MultigridSettings, LineHierarchy, solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
@@ -240,13 +240,12 @@ def coarsest_level(domain) -> int:
     return level
 
 
-#: the stop rules of a step's cycles: the steady solver's without its load floor (converged when the
-#: changes of (H_min, H0) fall below the tolerance and the load error below 10 x the tolerance), and with the
-#: estimate of the remaining change (a step whose cycles contract fast stops when what they would still change is
-#: below the tolerance; measured on the LS-1 flat-follower turn, 720 steps at level 8, tolerance 1e-5: 5.7 -> 4.4 s,
-#: h_min over the turn 145.063 -> 145.016 nm), as a warm-started steady solve
-#: (:data:`camcontact.ehl.line_multigrid.WARM_RULES`)
-MONITOR_RULES = attrs.evolve(STEADY_RULES, load_floor=0.0, estimate_remaining=True)
+#: the stop rules of a step's cycles: a warm-started steady solve's (:data:`camcontact.ehl.line_multigrid.WARM_RULES`)
+#: without its load floor (converged when the changes of (H_min, H0) fall below the tolerance and the load error
+#: below 10 x the tolerance, or when fast-contracting cycles leave less than the tolerance to change; measured on
+#: the LS-1 flat-follower turn, 720 steps at level 8, tolerance 1e-5: 5.7 -> 4.4 s with the estimate, h_min over
+#: the turn 145.063 -> 145.016 nm)
+MONITOR_RULES = attrs.evolve(WARM_RULES, load_floor=0.0)
 #: the stop rules of a step with mass-conserving cavitation: the plain change test (its lubricant content, watched,
 #: settles irregularly; measured: with the estimate a step of the reversal march balanced its lubricant 5.3e-4 of
 #: the inflow off, against the 5e-4 the plain test keeps)
