@@ -285,6 +285,17 @@ def log_viscosity(P, viscosity_code, params):
 
 
 @helper
+def pressure_of_log_viscosity(level, viscosity_code, params):
+    """A dimensionless pressure at or below which ln(eta-bar) <= ``level`` (>= 0): the inverse of
+    :func:`log_viscosity`, lowered by 1e-9 relative against rounding; infinite for an isoviscous lubricant."""
+    if viscosity_code == 0:
+        return level / params[0] * (1.0 - 1e-9) if params[0] > 0.0 else math.inf
+    if not (params[1] > 0.0 and params[2] > 0.0 and params[3] > 0.0):
+        return math.inf
+    return math.expm1(math.log1p(level / params[2]) / params[3]) / params[1] * (1.0 - 1e-9)
+
+
+@helper
 def density_ratio(P, density_code, params):
     if density_code == 0 or P <= 0.0:
         return 1.0

@@ -324,24 +324,26 @@ def chain_count(model, solves: int) -> int:
 
 
 def solve_chain(model, fallback, states) -> list:
-    """Solve the states in order, each warm-started from the last numerical solution before it;
-    an angle the solver cannot do falls back to the Pan–Hamrock formula with the reason."""
-    previous = None
+    """Solve the states in order, each warm-started from the numerical solutions of the two states before it
+    (their extrapolation, a continuation in angle); an angle the solver cannot do falls back to the Pan–Hamrock
+    formula with the reason, and the next one starts from the last solution only."""
+    previous = before = None
     out = []
     for state in states:
-        produced, failure = solve_numerically(model, state, previous)
+        produced, failure = solve_numerically(model, state, previous, before)
         if produced is None:
             out.append((fallback(state), fallback, f"multigrid failed ({failure}): Pan–Hamrock formula"))
+            before = None
             continue
-        previous = produced["ehl_solution"]
+        previous, before = produced["ehl_solution"], previous
         out.append((produced, model, ""))
     return out
 
 
-def solve_numerically(model, state, previous):
-    """Multigrid film warm-started from ``previous``; if that diverges or does not converge, once
-    more from a cold (full-multigrid) start, keeping a converged result if either gives one.
-    The caller silences the solver's ConvergenceWarning (the regime column reports it).
+def solve_numerically(model, state, previous, before=None):
+    """Multigrid film warm-started from ``previous`` (extrapolated with ``before``, the solution before it); if
+    that diverges or does not converge, once more from a cold (full-multigrid) start, keeping a converged result
+    if either gives one. The caller silences the solver's ConvergenceWarning (the regime column reports it).
 
     Returns (produced, None) or (None, failure message).
     """
@@ -349,7 +351,7 @@ def solve_numerically(model, state, previous):
     best = None
     for initial in ((previous, None) if previous is not None else (None,)):
         try:
-            produced = model.evaluate(**state, initial=initial)
+            produced = model.evaluate(**state, initial=initial, before=before if initial is not None else None)
         except ConvergenceError as exc:
             failure = str(exc).split(";")[0]
             continue

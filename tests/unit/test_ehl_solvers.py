@@ -70,6 +70,96 @@ def test_warm_start_from_a_neighbouring_solution():
     assert warm.record.work_units[-1] < cold.record.work_units[-1]
 
 
+def test_extrapolated_start_continues_a_sequence_of_equal_steps():
+    """Along M = 19, 20, 21 (equal steps) the start for M = 21 from the solutions at 19 and 20 is their linear
+    extrapolation, nearer to the converged film than the last solution (H0 5.6e-4 off instead of 5.0e-3); at the
+    cam cycle's tolerance 1e-5 its solve needs less work than the warm start from the last solution alone (3 F(1,1)
+    cycles instead of 4) and gives the same film. The spike, whose pressure jumps between nodes,
+    keeps the last solution's pressures; a pair on another grid gives the last solution itself."""
+    from camcontact.ehl.line_multigrid import SPIKE_CHANGE, WarmStart, extrapolated_start
+
+    problems = [LineEHLProblem(M=M, L=10, alpha=1.7e-8, z=0.68) for M in (19.0, 20.0, 21.0)]
+    first, last = (solve_multigrid(p, 8, tolerance=1e-10) for p in problems[:2])
+    target = solve_multigrid(problems[2], 8, tolerance=1e-10)
+    start = extrapolated_start(last, first, problems[2], 8)
+    assert isinstance(start, WarmStart) and start.P[0] == start.P[-1] == 0.0 and np.all(start.P >= 0.0)
+    assert start.H0 == pytest.approx(2 * last.H0 - first.H0)
+    assert abs(start.H0 - target.H0) < 0.2 * abs(last.H0 - target.H0)
+    change = last.P - first.P
+    jumps = np.abs(change) > SPIKE_CHANGE * last.P.max()
+    smooth = np.convolve(jumps, np.ones(7), mode="same") == 0
+    np.testing.assert_array_equal(start.P[smooth][1:-1], np.maximum(2 * last.P - first.P, 0.0)[smooth][1:-1])
+    assert jumps.any()  # level 8: the spike moves by a node between M = 19 and 20
+    np.testing.assert_array_equal(start.P[jumps], last.P[jumps])
+    plain = solve_multigrid(problems[2], 8, tolerance=1e-5, initial=last)  # the cam cycle's tolerance
+    predicted = solve_multigrid(problems[2], 8, tolerance=1e-5, initial=last, before=first)
+    assert predicted.record.converged and plain.record.converged
+    assert predicted.record.work_units[-1] < plain.record.work_units[-1]
+    assert predicted.H_min == pytest.approx(target.H_min, abs=1e-5)
+    coarser = solve_multigrid(problems[0], 7)
+    assert extrapolated_start(last, coarser, problems[2], 8) is last
+
+
+def test_a_warm_start_on_another_domain_maps_its_inlet():
+    """A warm start on a shorter or longer inlet: the new inlet's upstream half takes the start's inlet mapped
+    linearly (its boundary on the start's boundary, the middle fixed), the rest the start's own nodes; from it the
+    solve converges to the cold solution of the new domain."""
+    from camcontact.ehl.line_multigrid import inlet_mapped
+
+    X_start = np.linspace(-4.0, 1.5, 113)
+    same = inlet_mapped(X_start.copy(), X_start)
+    np.testing.assert_array_equal(same, X_start)
+    for X in (np.linspace(-5.0, 1.8, 113), np.linspace(-3.5, 1.4, 113)):
+        mapped = inlet_mapped(X, X_start)
+        assert mapped[0] == pytest.approx(X_start[0]) and np.all(np.diff(mapped) > 0)
+        middle = 0.5 * X_start[0]
+        np.testing.assert_array_equal(mapped[X >= middle], X[X >= middle])
+    longer = LineEHLProblem(M=20, L=10, alpha=1.7e-8, z=0.68, domain=(-5.0, 1.8))
+    start = solve_multigrid(TABLE51, 7)
+    warm = solve_multigrid(longer, 7, initial=start)
+    cold = solve_multigrid(longer, 7)
+    assert warm.record.converged and warm.H_min == pytest.approx(cold.H_min, abs=1e-6)
+
+
+def test_solves_of_one_domain_share_their_grid_tables():
+    """The grids and kernel tables depend on the domain and levels only: two hierarchies of one domain share them
+    (built once), another domain has its own; the transient solver's per-step scaling of its parabola leaves the
+    shared one alone."""
+    from camcontact.ehl.line_multigrid import LineHierarchy
+    from camcontact.ehl.line_transient import _TransientHierarchy
+
+    settings = MultigridSettings()
+    a = LineHierarchy(TABLE51, 6, settings, compiled=True)
+    b = LineHierarchy(LineEHLProblem(M=5, L=3), 6, settings, compiled=True)
+    c = LineHierarchy(LineEHLProblem(M=5, L=3, domain=(-5.0, 1.5)), 6, settings, compiled=True)
+    assert a.grids is b.grids and a.c1s is b.c1s and a.levels is b.levels
+    assert c.grids is not a.grids and c.levels[-1].X[0] == -5.0
+    shared = a.grids.parabola.copy()
+    transient = _TransientHierarchy(TABLE51, 6, settings, compiled=True)
+    transient.set_conditions(0.5, 1.0, 0.0)
+    np.testing.assert_array_equal(a.grids.parabola, shared)
+    np.testing.assert_allclose(transient.parabola, 0.5 * shared)
+
+
+def test_automatic_domain_is_rounded_up_so_that_neighbours_share_it():
+    """Thick films (reach sqrt(2 H) > 1) get the domain [-4 r, 1.5 r] with r rounded up to a power of 2^(1/4): never
+    shorter than the unrounded reach, at most 19 % longer, the same for neighbouring contacts (the LS-1 cam's lift
+    angles share four domains); thin films keep [-4, 1.5]."""
+    from camcontact.ehl.film_formulas import moes_line_film
+    from camcontact.models.film_multigrid import DOMAIN_RATIO, automatic_domain
+
+    assert automatic_domain(20.0, 10.0) == (-4.0, 1.5)
+    for M, L in ((2.0, 20.0), (3.0, 18.0), (0.5, 5.0), (1.0, 0.0)):
+        reach = math.sqrt(2.0 * moes_line_film(M, L) * math.pi / (8.0 * M))
+        assert reach > 1.0
+        inlet, outlet = automatic_domain(M, L)
+        rounded = -inlet / 4.0
+        assert outlet == pytest.approx(1.5 * rounded)
+        assert reach <= rounded < DOMAIN_RATIO * reach
+        assert math.log(rounded) / math.log(DOMAIN_RATIO) == pytest.approx(round(math.log(rounded) / math.log(DOMAIN_RATIO)))
+    assert automatic_domain(3.0, 18.0) == automatic_domain(3.05, 18.1)
+
+
 def test_derived_quantities_and_dimensional_values():
     solution = solve_multigrid(TABLE51, 6)
     assert solution.X[np.argmin(solution.H)] == solution.X_min
