@@ -117,6 +117,10 @@ class MultigridSettings:
     #: Petrusevich spike, whose nodes each cycle then solves together by Newton
     #: (:func:`camcontact.ehl._fas_kernels.relax_spikes`); 0: off
     spike_drop: float = attrs.field(default=2.0, validator=attrs.validators.ge(0.0))
+    #: post-sweeps of the finest grid's cycles once a cycle changed the watched films by more than :data:`STALL` times
+    #: the change of the cycle before (None: ``post_sweeps`` throughout): cheap cycles while they contract fast,
+    #: smoothed ones when they stall (:data:`WARM_SETTINGS`)
+    finish_post_sweeps: int | None = None
 
 
 class _Level:
@@ -334,15 +338,21 @@ class LineHierarchy:
 #: the conservative settings of the further attempts after a divergence or stagnation: smaller
 #: relaxation factors and Gauss–Seidel only where the equation is clearly differential, first
 #: with F-cycles, then with W-cycles (twice the work per cycle, the most robust)
-ROBUST = ({"cycle": "F", "pre_sweeps": 2, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0},
-          {"cycle": "W", "pre_sweeps": 2, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0})
+ROBUST = ({"cycle": "F", "pre_sweeps": 2, "post_sweeps": 1, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0},
+          {"cycle": "W", "pre_sweeps": 2, "post_sweeps": 1, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0})
 
-#: the settings of a warm-started solve (a cam angle from its neighbour): F-cycles with one pre-sweep instead of two.
-#: A warm start's cycles are limited by the coarse grids' corrections, not by the smoothing: measured over the LS-1
-#: roller cycle (level 8, 180 lift angles, extrapolated starts, tolerance 1e-5) F(1,1) took 624 cycles and 5314 work
-#: units where F(2,1) took 638 and 7894, with h_min within 3.3e-5 of the tightly converged films (F(2,1): 1.4e-5;
-#: Hertz units, 0.06 nm); V-cycles took 35 % more cycles and left one thesis-convention angle 6.9e-4 off
-WARM_SETTINGS = MultigridSettings(pre_sweeps=1)
+#: the settings of a warm-started solve (a cam angle from its neighbour): F-cycles with one pre-sweep and no
+#: post-sweep (the spike's nodes are still solved after each coarse-grid correction) instead of (2, 1), and one
+#: post-sweep again once the cycles stall (:data:`STALL`). A warm start's cycles are limited by the coarse grids'
+#: corrections and the pressure spike, not by the smoothing, until the last digits: measured over the LS-1 roller
+#: cycle (level 8, the 180 lift angles from extrapolated starts; consistent / thesis convention), work units at
+#: tolerance 1e-5: F(2,1) 7894 (consistent), F(1,1) 4575 / 5347, F(1,0) 2562 / 2986, these settings 2783 / 3355
+#: (1.58 / 1.67 s against 1.82 / 2.16 s with F(1,1)), the films within 3.9e-5 / 3.7e-5 of tightly converged ones
+#: (Hertz units, 0.07 nm; F(1,1) 3.1e-5 / 2.8e-5). At tolerance 1e-7 the films end 8.3e-7 / 6.3e-7 off (F(1,1)
+#: 4.9e-7 / 5.7e-7, F(1,0) throughout 8.6e-7) in about the time of F(1,1); a single warm start of the M 20, L 10
+#: contact on level 7 ends 1.1e-7 off (F(1,0) throughout 4.2e-7, F(1,1) 2.4e-8). V-cycles took 35 % more cycles
+#: than F-cycles and left one thesis-convention angle 6.9e-4 off
+WARM_SETTINGS = MultigridSettings(pre_sweeps=1, post_sweeps=0, finish_post_sweeps=1)
 
 
 def solve_multigrid(
@@ -546,6 +556,7 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
     finest = solver.levels[-1]
     zero = np.zeros(finest.n)
     watch = CycleMonitor(rules or MONITOR_RULES, tolerance, solver.freeze_dry, start=reference)
+    change = None  # the last cycle's largest change of the watched films
     for _ in range(settings.max_cycles):
         P, H0 = solver.cycle(len(solver.levels) - 1, P, H0, zero, 0.0)
         H = solver.film(finest, P, H0)
@@ -566,6 +577,10 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
             )
         if watch.after_cycle(P, solver.watched(finest, P, H, H0), residual, solver.load(finest, P), solver.work):
             break
+        change, last_change = watch.last_change, change
+        if (settings.finish_post_sweeps is not None and change is not None and last_change is not None
+                and change > STALL * last_change):
+            solver.int_settings[1] = settings.finish_post_sweeps
     else:
         watch.out_of_cycles(settings.max_cycles)
     converged, message = watch.converged, watch.message
@@ -586,6 +601,11 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
     return LineEHLSolution(problem=problem, level=int(levels), X=finest.X, P=P, H=H, H0=float(H0), record=record,
                            settings=settings, theta=theta, flow_factor=None if plain else phi.copy())
 
+
+#: a warm start's cycles get their post-sweeps back (:attr:`MultigridSettings.finish_post_sweeps`) after a cycle whose
+#: largest change of the watched films is more than this share of the cycle's before (the cheap cycles stall:
+#: smoothing limits them now; 0.5 came too late for a single warm start's last digits; see :data:`WARM_SETTINGS`)
+STALL = 0.3
 
 #: a finest-grid residual above this is a runaway state, however finite: an attempt that reaches it has diverged
 #: (measured over the Moes map of ``benchmarks/stability_map.py``: converging cases start below 1e-2; M = 3000,
