@@ -81,13 +81,31 @@ from .deformation import DIRECT_BELOW, Deformation
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
 from .line_solution import ConvergenceRecord, LineEHLSolution
 
-__all__ = ["MONITOR_RULES", "RUNAWAY_RESIDUAL", "WARM_RULES", "WARM_SETTINGS", "LineHierarchy", "MultigridSettings",
+__all__ = ["MONITOR_RULES", "RUNAWAY_RESIDUAL", "WARM_RULES", "LineHierarchy", "MultigridSettings",
            "WarmStart", "extrapolated_start", "inlet_mapped", "solve_multigrid"]
 
 
 @attrs.frozen
 class MultigridSettings:
-    """Numerical settings of :func:`solve_multigrid` (defaults tested across the Moes map)."""
+    """Numerical settings of :func:`solve_multigrid` (defaults tested across the Moes map).
+
+    The default cycles are lean F-cycles (:attr:`lean`): the full-multigrid start runs one F(1,1)-cycle per level,
+    the finest grid F(1,0)-cycles while they contract fast and F(2,1) once they stall. A cycle's progress is limited by
+    the coarse grids' corrections and the pressure spike, not by the smoothing, until the last digits. Measured
+    against F(2,1) throughout (M 20, L 10 of Tsuha's Table 5.1, tolerance 1e-5): level 12 in 20 work units instead
+    of 36 (0.111 s against 0.170 s), H_min 9.8e-9 from a tight solution (F(2,1): 7.4e-8; the discretisation error
+    2.6e-7); level 14 in 0.40 s against 0.62 s (4.6e-9 off; discretisation error 2.1e-8); level 8 in 29 instead of 59
+    work units. Over the LS-1 cam cycle (level 8, the 180 lift angles warm-started from extrapolated starts; consistent
+    / thesis convention, tolerance 1e-5): 2961 / 3678 work units against 6661 / 7824 (1.57 / 1.72 s against 2.24 /
+    2.58 s), the films within 3.8e-5 / 3.7e-5 of tightly converged ones (Hertz units, 0.07 nm; F(2,1) 3.4e-5 /
+    1.0e-5); at tolerance 1e-7 6.4e-7 / 1.1e-6 off (F(2,1) 3.2e-7 / 6.3e-7). Tried and dropped: F(1,0) throughout
+    (its unsmoothed states carry the coarse correction's error at the free boundary and the spike: a warm start of
+    the M 20, L 10 contact on level 7 stopped at tolerance 1e-7 4.2e-7 off, lean 4.7e-8); F(1,1) throughout (the
+    spike's pressures at tolerance 1e-9 1.8e-6 off, lean 4.7e-7, F(2,1) 2.0e-7); a full-multigrid start with one
+    pre-sweep throughout (M = 3000 diverged at L = 2-20: the ladder's next attempt, :data:`ROBUST`, is F(2,1));
+    V-cycles (35 % more cycles than F over the cam cycle, one thesis-convention angle 6.9e-4 off; a full-multigrid
+    start by V-cycles missed H0 by 2e-4 on level 12, by F-cycles by 2e-8).
+    """
 
     cycle: str = attrs.field(default="F", validator=attrs.validators.in_(("V", "F", "W")))
     pre_sweeps: int = 2
@@ -117,10 +135,12 @@ class MultigridSettings:
     #: Petrusevich spike, whose nodes each cycle then solves together by Newton
     #: (:func:`camcontact.ehl._fas_kernels.relax_spikes`); 0: off
     spike_drop: float = attrs.field(default=2.0, validator=attrs.validators.ge(0.0))
-    #: post-sweeps of the finest grid's cycles once a cycle changed the watched films by more than :data:`STALL` times
-    #: the change of the cycle before (None: ``post_sweeps`` throughout): cheap cycles while they contract fast,
-    #: smoothed ones when they stall (:data:`WARM_SETTINGS`)
-    finish_post_sweeps: int | None = None
+    #: lean cycles where the smoothing does not limit them (class docstring): the full-multigrid start's cycles with
+    #: one pre-sweep (and ``post_sweeps``: their results are interpolated to the next level), the finest grid's (after
+    #: that start, or from a warm start) with one pre-sweep and none after while they contract fast, and with
+    #: ``pre_sweeps`` and ``post_sweeps`` from the cycle after one that changed the watched films by more than
+    #: :data:`STALL` times the change of the cycle before. False: (``pre_sweeps``, ``post_sweeps``) throughout
+    lean: bool = True
 
 
 class _Level:
@@ -182,6 +202,13 @@ def _grids(domain: tuple, levels: int, deformation: str, cycle_coarsest: int, co
     return _Grids(domain, levels, deformation, cycle_coarsest, compiled)
 
 
+@functools.lru_cache(maxsize=256)
+def _schedule(k: int, kind: str, coarsest: int) -> np.ndarray:
+    """The shared :func:`camcontact.ehl._fas_kernels.cycle_schedule` (unrolling an F-cycle from level 12 in Python
+    took 1.3 ms, the nine of a full-multigrid start to level 12 11 ms of a 0.1 s solve)."""
+    return _fas_kernels.cycle_schedule(k, kind, coarsest)
+
+
 class LineHierarchy:
     """The level hierarchy of one solve: per-level buffers for the compiled cycles
     (:func:`camcontact.ehl._fas_kernels.fas_cycle`) and the finest-grid operator pieces the
@@ -209,7 +236,6 @@ class LineHierarchy:
         self.work = 0.0
         #: frozen cavitation sets per level number (set when the cycles start to alternate)
         self.dry: dict[int, np.ndarray] = {}
-        self._schedules: dict = {}
         self._buffers()
 
     def _buffers(self) -> None:
@@ -317,10 +343,7 @@ class LineHierarchy:
         free-boundary rules of the module docstring; compiled as one call.
         """
         kind = kind or self.settings.cycle
-        key = (k, kind)
-        schedule = self._schedules.get(key)
-        if schedule is None:
-            schedule = self._schedules[key] = _fas_kernels.cycle_schedule(k, kind, self.settings.cycle_coarsest - 1)
+        schedule = _schedule(k, kind, self.settings.cycle_coarsest - 1)
         o, n = int(self.offsets[k]), int(self.n_of[k])
         self.P_all[o:o + n] = P
         self.f_all[o:o + n] = f
@@ -335,24 +358,13 @@ class LineHierarchy:
         return self.P_all[o:o + n].copy(), float(self.H0s[k])
 
 
-#: the conservative settings of the further attempts after a divergence or stagnation: smaller
-#: relaxation factors and Gauss–Seidel only where the equation is clearly differential, first
-#: with F-cycles, then with W-cycles (twice the work per cycle, the most robust)
-ROBUST = ({"cycle": "F", "pre_sweeps": 2, "post_sweeps": 1, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0},
-          {"cycle": "W", "pre_sweeps": 2, "post_sweeps": 1, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0})
-
-#: the settings of a warm-started solve (a cam angle from its neighbour): F-cycles with one pre-sweep and no
-#: post-sweep (the spike's nodes are still solved after each coarse-grid correction) instead of (2, 1), and one
-#: post-sweep again once the cycles stall (:data:`STALL`). A warm start's cycles are limited by the coarse grids'
-#: corrections and the pressure spike, not by the smoothing, until the last digits: measured over the LS-1 roller
-#: cycle (level 8, the 180 lift angles from extrapolated starts; consistent / thesis convention), work units at
-#: tolerance 1e-5: F(2,1) 7894 (consistent), F(1,1) 4575 / 5347, F(1,0) 2562 / 2986, these settings 2783 / 3355
-#: (1.58 / 1.67 s against 1.82 / 2.16 s with F(1,1)), the films within 3.9e-5 / 3.7e-5 of tightly converged ones
-#: (Hertz units, 0.07 nm; F(1,1) 3.1e-5 / 2.8e-5). At tolerance 1e-7 the films end 8.3e-7 / 6.3e-7 off (F(1,1)
-#: 4.9e-7 / 5.7e-7, F(1,0) throughout 8.6e-7) in about the time of F(1,1); a single warm start of the M 20, L 10
-#: contact on level 7 ends 1.1e-7 off (F(1,0) throughout 4.2e-7, F(1,1) 2.4e-8). V-cycles took 35 % more cycles
-#: than F-cycles and left one thesis-convention angle 6.9e-4 off
-WARM_SETTINGS = MultigridSettings(pre_sweeps=1, post_sweeps=0, finish_post_sweeps=1)
+#: the further attempts after a divergence or stagnation: two pre-sweeps (the full-multigrid start of the heaviest
+#: loads, M = 3000, needs them: measured on level 9, one pre-sweep diverged at L = 2-20, two converged in 0.9-2.0 s),
+#: then the conservative settings, smaller relaxation factors and Gauss–Seidel only where the equation is clearly
+#: differential, first with F-cycles, then with W-cycles (twice the work per cycle, the most robust)
+ROBUST = ({"lean": False},
+          {"cycle": "F", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0},
+          {"cycle": "W", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0})
 
 
 def solve_multigrid(
@@ -393,7 +405,6 @@ def solve_multigrid(
         counts from the prediction; a warm-started solve stops also when fast-contracting cycles leave less than
         the tolerance to change (:data:`WARM_RULES`).
     settings : MultigridSettings, optional
-        None: ``MultigridSettings()`` for a full-multigrid start, :data:`WARM_SETTINGS` for a warm start.
     initial : LineEHLSolution, optional
         Warm start (interpolated onto the finest grid; FMG is then skipped).
     before : LineEHLSolution, optional
@@ -429,7 +440,7 @@ def solve_multigrid(
     if problem.supply is not None:
         raise InputError(f"solve_multigrid: the problem has a starved inlet (supply = {problem.supply!r}); solve it "
                          "with camcontact.ehl.line_starved.solve_starved, which finds its meniscus")
-    settings = settings or (WARM_SETTINGS if initial is not None else MultigridSettings())
+    settings = settings or MultigridSettings()
     if initial is not None and before is not None:
         initial = extrapolated_start(initial, before, problem, levels)
     return run_ladder(settings, ROBUST,
@@ -458,7 +469,7 @@ def extrapolated_start(last, before, problem: LineEHLProblem, levels: int):
     Where the pressure changed by more than :data:`SPIKE_CHANGE` times its maximum from ``before`` to ``last`` (the
     pressure spike, which jumps from node to node rather than moving smoothly) and three nodes either side, the
     start keeps ``last``'s pressures. Measured on the LS-1 roller cycle (level 8, the 180 lift angles, tolerance
-    1e-5, :data:`WARM_SETTINGS`; consistent / thesis convention): from the last angle's solution 5989 / 6364 work
+    1e-5, F(1,1)-cycles; consistent / thesis convention): from the last angle's solution 5989 / 6364 work
     units, from the plain extrapolation 5386 / 6362 (it put a few spikes so far off that the first cycle moved
     H_min by 1e-2), with the spike kept 4725 / 5628; the films within 3.1e-5 / 2.9e-5 of the tightly converged
     ones (Hertz units; 0.06 nm), against 8.7e-6 / 1.9e-5 from the last solution. The start from the last angle
@@ -530,6 +541,8 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled, factors
         first, coarse = _start(problem, min(settings.start_level, len(solver.levels)), len(solver.levels))
         P, H0 = coarse.P.copy(), coarse.H0
         solver.work += coarse.record.cycles * coarse.X.size / finest.n
+        if settings.lean:  # F(1, post_sweeps) on the way up
+            solver.int_settings[0] = 1
         for k in range(first, len(solver.levels)):
             P = np.maximum(solver.prolong_cubic(P), 0.0)
             P[0] = P[-1] = 0.0
@@ -540,6 +553,12 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled, factors
             zero = np.zeros(solver.levels[k].n)
             for _ in range(settings.fmg_cycles):
                 P, H0 = solver.cycle(k, P, H0, zero, 0.0)
+            if not (np.all(np.isfinite(P)) and math.isfinite(H0) and np.max(P) < RUNAWAY_PRESSURE):
+                # diverged on the way up: the attempt ends here, not after the finest grid's cycles
+                raise ConvergenceError(
+                    f"line EHL multigrid diverged (M = {problem.M:.4g}, L = {problem.L:.4g}) in its full-multigrid "
+                    f"start on level {k + 1} (max P = {np.max(P):.3g}, H0 = {H0:.4g})",
+                    _record(solver, [], [], [], start, False, "diverged in the full-multigrid start", tolerance))
         if first < len(solver.levels):  # the full multigrid result: the first cycle's change is measured from it
             reference = solver.watched(finest, P, solver.film(finest, P, H0), H0)
     return _converge_finest(solver, P, H0, tolerance, start, reference, WARM_RULES if initial is not None else None)
@@ -557,6 +576,8 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
     zero = np.zeros(finest.n)
     watch = CycleMonitor(rules or MONITOR_RULES, tolerance, solver.freeze_dry, start=reference)
     change = None  # the last cycle's largest change of the watched films
+    if settings.lean:  # F(1,0) until the cycles stall
+        solver.int_settings[0], solver.int_settings[1] = 1, 0
     for _ in range(settings.max_cycles):
         P, H0 = solver.cycle(len(solver.levels) - 1, P, H0, zero, 0.0)
         H = solver.film(finest, P, H0)
@@ -578,9 +599,8 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
         if watch.after_cycle(P, solver.watched(finest, P, H, H0), residual, solver.load(finest, P), solver.work):
             break
         change, last_change = watch.last_change, change
-        if (settings.finish_post_sweeps is not None and change is not None and last_change is not None
-                and change > STALL * last_change):
-            solver.int_settings[1] = settings.finish_post_sweeps
+        if settings.lean and change is not None and last_change is not None and change > STALL * last_change:
+            solver.int_settings[0], solver.int_settings[1] = settings.pre_sweeps, settings.post_sweeps
     else:
         watch.out_of_cycles(settings.max_cycles)
     converged, message = watch.converged, watch.message
@@ -602,9 +622,9 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
                            settings=settings, theta=theta, flow_factor=None if plain else phi.copy())
 
 
-#: a warm start's cycles get their post-sweeps back (:attr:`MultigridSettings.finish_post_sweeps`) after a cycle whose
+#: lean cycles get their post-sweeps back (:attr:`MultigridSettings.lean`) after a cycle whose
 #: largest change of the watched films is more than this share of the cycle's before (the cheap cycles stall:
-#: smoothing limits them now; 0.5 came too late for a single warm start's last digits; see :data:`WARM_SETTINGS`)
+#: smoothing limits them now; 0.5 came too late for a single warm start's last digits; see :class:`MultigridSettings`)
 STALL = 0.3
 
 #: a finest-grid residual above this is a runaway state, however finite: an attempt that reaches it has diverged
@@ -612,6 +632,10 @@ STALL = 0.3
 #: L = 0 on level 9, whose discrete film closes, ran off to residuals of 1e39-1e169 with H0 ~ 1e36 and, finite,
 #: was kept as the attempt with the smallest residual)
 RUNAWAY_RESIDUAL = 1e6
+
+#: a full-multigrid start whose pressures exceed this (Hertz units; the Petrusevich spike of the hardest cases of the
+#: Moes map reaches about 10) on a level has diverged there
+RUNAWAY_PRESSURE = 1e6
 
 _MAX_START_LEVEL = 6  # the dense start solver stays below ~1 s
 

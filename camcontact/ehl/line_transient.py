@@ -280,7 +280,8 @@ class TransientLineSolver:
         load error below ten times it (reference scaling).
     settings : MultigridSettings, optional
         Cycle settings; a step that fails is retried with :data:`~.line_multigrid.ROBUST`.
-        Default: the steady defaults with V-cycles and the cycles' coarsest level from :func:`coarsest_level`
+        Default: V(2,1)-cycles (not lean: the steps run their own cycles) and the cycles' coarsest level from
+        :func:`coarsest_level`
         (a warm-started step needs little coarse-grid work; measured on the LS-1 roller turn, 720 steps, level 8,
         5 % slip: V 16.4 s, 4.3 cycles per step, against F 22.4 s, 3.3 cycles; h_min the same to 0.002 nm).
     strict : bool
@@ -313,8 +314,8 @@ class TransientLineSolver:
         self.scheme = scheme
         self.tolerance = float(tolerance)
         if settings is None:
-            settings = MultigridSettings(cycle="V", cycle_coarsest=min(coarsest_level(scaling.problem.domain),
-                                                                       int(levels) - 1))
+            settings = MultigridSettings(cycle="V", pre_sweeps=2, lean=False,
+                                         cycle_coarsest=min(coarsest_level(scaling.problem.domain), int(levels) - 1))
         self.settings = settings
         self.strict = strict
         self.compiled = compiled
