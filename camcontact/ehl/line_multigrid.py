@@ -89,13 +89,15 @@ __all__ = ["MONITOR_RULES", "RUNAWAY_RESIDUAL", "WARM_RULES", "LineHierarchy", "
 class MultigridSettings:
     """Numerical settings of :func:`solve_multigrid` (defaults tested across the Moes map).
 
-    The default cycles are lean F-cycles (:attr:`lean`): the full-multigrid start runs one F(1,1)-cycle per level,
-    the finest grid F(1,0)-cycles while they contract fast and F(2,1) once they stall. A cycle's progress is limited by
-    the coarse grids' corrections and the pressure spike, not by the smoothing, until the last digits. Measured
-    against F(2,1) throughout (M 20, L 10 of Tsuha's Table 5.1, tolerance 1e-5): level 12 in 20 work units instead
-    of 36 (0.111 s against 0.170 s), H_min 9.8e-9 from a tight solution (F(2,1): 7.4e-8; the discretisation error
-    2.6e-7); level 14 in 0.40 s against 0.62 s (4.6e-9 off; discretisation error 2.1e-8); level 8 in 29 instead of 59
-    work units. Over the LS-1 cam cycle (level 8, the 180 lift angles warm-started from extrapolated starts; consistent
+    The default cycles are lean F-cycles (:attr:`lean`): the full-multigrid start runs one F(1,1)-cycle per level
+    below the finest, the finest grid F(1,0)-cycles while they contract fast and F(2,1) once they stall. A cycle's
+    progress is limited by the coarse grids' corrections and the pressure spike, not by the smoothing, until the last
+    digits. Measured against F(2,1) throughout (M 20, L 10 of Tsuha's Table 5.1, tolerance 1e-5,
+    ``benchmarks/ehl_speed.py``): level 12 in 16 work units instead of 36 (0.096 s against 0.17 s), H_min 3.6e-10
+    from a tight solution (F(2,1): 7.4e-8; the discretisation error 2.6e-7); level 14 in 0.37 s against 0.62 s
+    (1.0e-9 off; discretisation error 2.1e-8); but level 8 in 45 instead of 59 work units where the finest grid's
+    full-multigrid cycle with a post-sweep took 29 (the finest level runs lean: nothing interpolates its result;
+    levels 12-14 gain 20 %, level 8 loses 50 %). Over the LS-1 cam cycle (level 8, the 180 lift angles warm-started from extrapolated starts; consistent
     / thesis convention, tolerance 1e-5): 2961 / 3678 work units against 6661 / 7824 (1.57 / 1.72 s against 2.24 /
     2.58 s), the films within 3.8e-5 / 3.7e-5 of tightly converged ones (Hertz units, 0.07 nm; F(2,1) 3.4e-5 /
     1.0e-5); at tolerance 1e-7 6.4e-7 / 1.1e-6 off (F(2,1) 3.2e-7 / 6.3e-7). Tried and dropped: F(1,0) throughout
@@ -136,8 +138,8 @@ class MultigridSettings:
     #: (:func:`camcontact.ehl._fas_kernels.relax_spikes`); 0: off
     spike_drop: float = attrs.field(default=2.0, validator=attrs.validators.ge(0.0))
     #: lean cycles where the smoothing does not limit them (class docstring): the full-multigrid start's cycles with
-    #: one pre-sweep (and ``post_sweeps``: their results are interpolated to the next level), the finest grid's (after
-    #: that start, or from a warm start) with one pre-sweep and none after while they contract fast, and with
+    #: one pre-sweep (and ``post_sweeps`` below the finest level: their results are interpolated to the next level),
+    #: the finest grid's with one pre-sweep and none after while they contract fast, and with
     #: ``pre_sweeps`` and ``post_sweeps`` from the cycle after one that changed the watched films by more than
     #: :data:`STALL` times the change of the cycle before. False: (``pre_sweeps``, ``post_sweeps``) throughout
     lean: bool = True
@@ -551,6 +553,8 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled, factors
                 solver.theta(solver.levels[k])[:] = np.minimum(np.interp(solver.levels[k].X, solver.levels[k - 1].X,
                                                                          below), 1.0)
             zero = np.zeros(solver.levels[k].n)
+            if settings.lean and k == len(solver.levels) - 1:  # the finest's result is not interpolated: lean
+                solver.int_settings[1] = 0
             for _ in range(settings.fmg_cycles):
                 P, H0 = solver.cycle(k, P, H0, zero, 0.0)
             if not (np.all(np.isfinite(P)) and math.isfinite(H0) and np.max(P) < RUNAWAY_PRESSURE):

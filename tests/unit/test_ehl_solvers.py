@@ -39,7 +39,9 @@ def test_a_converged_solution_is_a_fixed_point_of_the_cycle():
     from camcontact.ehl.line_multigrid import LineHierarchy
 
     level = 10
-    solution = solve_multigrid(TABLE51, level, tolerance=1e-9)
+    # tolerance 1e-10: the lean cycles' stop at 1e-9 leaves the spike's pressures 1.2e-6 from their converged values
+    # (the films converged), which the next cycles remove (1.6e-7, 2.2e-8: no kick, which would not shrink)
+    solution = solve_multigrid(TABLE51, level, tolerance=1e-10)
     assert solution.record.converged
     solver = LineHierarchy(TABLE51, level, MultigridSettings(), compiled=True)
     P, H0 = solution.P.copy(), solution.H0
