@@ -100,5 +100,5 @@ frame = benchmark.main(["--quick", "--out", "tutorial_03_results"])
 # miss the reference by a few to ~20 % (their error varies over the map and depends on the
 # viscosity law the reference uses: with Roelands the numerical films are thinner than the Barus-
 # based Moes fit). The multigrid error falls roughly four-fold per level while its time doubles:
-# level 7 (897 nodes) is already below 1 % here, and level 12 (28,673 nodes) solves in about
-# 0.3 s on a 2-core machine (`benchmarks/ehl_speed.py`).
+# level 7 (897 nodes) is already below 1 % here, and level 12 (28,673 nodes) solves to its discretisation
+# accuracy in about 0.1 s on a 2-core machine (`benchmarks/ehl_speed.py`).

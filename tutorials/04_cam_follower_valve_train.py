@@ -87,9 +87,9 @@ print(dynamics.summary_frame().T)
 
 # %% [markdown]
 # ## 4. Contact and film over the cycle
-# Formulas at every degree cost milliseconds; the numerical film (`multigrid`, warm-started from
-# angle to angle, in one arc per thread) takes about 8–14 s for a whole 1° cycle at level 8
-# (`benchmarks/cam_cycle.py`). Here it is run at the thesis's angles, in the thesis-compatible
+# Formulas at every degree cost milliseconds; the numerical film (`multigrid`, each angle started from
+# the extrapolation of the two before, in one arc per thread) takes about 1 s for a whole 1° cycle at
+# level 8 and tolerance 1e-5 on two cores, 2 s at the default 1e-7 (`benchmarks/cam_cycle.py`). Here it is run at the thesis's angles, in the thesis-compatible
 # convention — which reproduces its Table 6.4 — and in camcontact's consistent one: the thesis
 # used the mean speed where Moes uses the sum, so its films are those of half the physical
 # entrainment speed.

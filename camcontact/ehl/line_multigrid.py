@@ -95,9 +95,9 @@ class MultigridSettings:
     digits. Measured against F(2,1) throughout (M 20, L 10 of Tsuha's Table 5.1, tolerance 1e-5,
     ``benchmarks/ehl_speed.py``): level 12 in 16 work units instead of 36 (0.096 s against 0.17 s), H_min 3.6e-10
     from a tight solution (F(2,1): 7.4e-8; the discretisation error 2.6e-7); level 14 in 0.37 s against 0.62 s
-    (1.0e-9 off; discretisation error 2.1e-8); but level 8 in 45 instead of 59 work units where the finest grid's
-    full-multigrid cycle with a post-sweep took 29 (the finest level runs lean: nothing interpolates its result;
-    levels 12-14 gain 20 %, level 8 loses 50 %). Over the LS-1 cam cycle (level 8, the 180 lift angles warm-started from extrapolated starts; consistent
+    (1.0e-9 off; discretisation error 2.1e-8); level 8 in 45 instead of 59 work units (with a post-sweep in the
+    finest level's full-multigrid cycle, whose result nothing interpolates: 29, but levels 12-14 20 % slower). Over
+    the LS-1 cam cycle (level 8, the 180 lift angles warm-started from extrapolated starts; consistent
     / thesis convention, tolerance 1e-5): 2961 / 3678 work units against 6661 / 7824 (1.57 / 1.72 s against 2.24 /
     2.58 s), the films within 3.8e-5 / 3.7e-5 of tightly converged ones (Hertz units, 0.07 nm; F(2,1) 3.4e-5 /
     1.0e-5); at tolerance 1e-7 6.4e-7 / 1.1e-6 off (F(2,1) 3.2e-7 / 6.3e-7). Tried and dropped: F(1,0) throughout
