@@ -27,7 +27,9 @@ the discrete problem of :mod:`camcontact.ehl.line_operator`:
 * **cycles** — V, F (default: W-like coarse treatment at O(n) cost in 1-D) or W, each run as
   one compiled call (:mod:`._fas_kernels`: the recursion unrolled into a schedule); started by
   full multigrid from an exact Newton solution on a start level (level 3, raised until the
-  discrete solution has positive films; parameter continuation when Newton needs it);
+  discrete solution has positive films; parameter continuation when Newton needs it), or warm from a
+  neighbouring solution (extrapolated from two, :func:`extrapolated_start`); lean by default: one pre-sweep and
+  no post-sweep while the cycles contract fast (:attr:`MultigridSettings.lean`);
 * **the pressure spike** — where the viscosity falls by more than e^``spike_drop`` between two nodes just past a
   pressure maximum (the Petrusevich spike of a piezoviscous contact), the six nodes around the fall are solved
   together by a local Newton after the pre-sweeps of every level and again after its post-sweeps
@@ -360,9 +362,9 @@ class LineHierarchy:
         return self.P_all[o:o + n].copy(), float(self.H0s[k])
 
 
-#: the further attempts after a divergence or stagnation: two pre-sweeps (the full-multigrid start of the heaviest
-#: loads, M = 3000, needs them: measured on level 9, one pre-sweep diverged at L = 2-20, two converged in 0.9-2.0 s),
-#: then the conservative settings, smaller relaxation factors and Gauss–Seidel only where the equation is clearly
+#: the further attempts after a divergence or stagnation: F(2,1)-cycles throughout instead of lean ones (the
+#: full-multigrid start of the heaviest loads, M = 3000, needs two pre-sweeps: measured on level 9, one diverged at
+#: L = 2-20, two converged in 0.9-2.0 s), then the conservative settings, smaller relaxation factors and Gauss–Seidel only where the equation is clearly
 #: differential, first with F-cycles, then with W-cycles (twice the work per cycle, the most robust)
 ROBUST = ({"lean": False},
           {"cycle": "F", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0},
@@ -626,9 +628,10 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
                            settings=settings, theta=theta, flow_factor=None if plain else phi.copy())
 
 
-#: lean cycles get their post-sweeps back (:attr:`MultigridSettings.lean`) after a cycle whose
-#: largest change of the watched films is more than this share of the cycle's before (the cheap cycles stall:
-#: smoothing limits them now; 0.5 came too late for a single warm start's last digits; see :class:`MultigridSettings`)
+#: lean cycles become F(``pre_sweeps``, ``post_sweeps``) (:attr:`MultigridSettings.lean`) after a cycle whose largest
+#: change of the watched films is more than this share of the cycle's before (the cheap cycles stall: smoothing
+#: limits them now; 0.5 came too late for a single warm start's last digits, 4.2e-7 off at tolerance 1e-7 instead of
+#: 4.7e-8; see :class:`MultigridSettings`)
 STALL = 0.3
 
 #: a finest-grid residual above this is a runaway state, however finite: an attempt that reaches it has diverged
