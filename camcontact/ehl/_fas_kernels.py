@@ -457,7 +457,9 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     ``K_dense[k]`` the dense K/pi of a coarsest level. ``real_settings`` = (omega_gs,
     omega_jacobi, switch, h0_relaxation); ``int_settings`` = (pre_sweeps, post_sweeps,
     coarsest_sweeps, window, correct_pressurised_only, freeze_free_boundary,
-    dry_keeps_own_equation). Returns the work done in finest-grid relaxation units.
+    dry_keeps_own_equation, first_top): the cycle's top level relaxes its nodes from ``first_top`` on (1: all;
+    the nodes before it are held as they are, a truncated inlet). Returns the work done in finest-grid relaxation
+    units.
 
     ``phi_all`` holds the flow factors' (a, k) per node and level (shape (total, 2); (1, 0) for the isothermal
     Newtonian film; see :mod:`camcontact.ehl._kernels`), given on every level (the hierarchy restricts the finest
@@ -481,6 +483,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     pressurised_only = int_settings[4] != 0
     freeze_boundary = int_settings[5] != 0
     dry_own = int_settings[6] != 0
+    first_top = int_settings[7]
     n_finest = n_of[n_of.shape[0] - 1]
     top = schedule[0, 1]
     # the nodes each level holds at P = 0: the frozen set, and (mass-conserving) on the coarse levels every node
@@ -532,7 +535,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
                 H_before = H.copy()
                 P_before = P.copy()
             relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, params, K, omega_gs, omega_jacobi,
-                         switch, window, 1, n - 2, dry, s, c_t, update_theta, supply)
+                         switch, window, first_top if k == top else 1, n - 2, dry, s, c_t, update_theta, supply)
             work += (n - 2) / n_finest
         film_now = np.empty(0)  # this level's film of its current pressures, when the spike solve leaves it
         if spike_drop > 0.0 and op != SOLVE:  # after the pre-sweeps (before the restriction) and the post-sweeps

@@ -262,8 +262,10 @@ class LineHierarchy:
         self.phi_all[:, 0] = 1.0
         self.H0s, self.loads = np.zeros(len(levels)), np.zeros(len(levels))
         self.real_settings = np.array([s.omega_gs, s.omega_jacobi, s.switch, s.h0_relaxation, s.spike_drop])
+        #: the last entry: the first node the top level relaxes (1: all; a starved transient step holds the nodes
+        #: upstream of its meniscus, :meth:`camcontact.ehl.line_transient.TransientLineSolver._starved_step`)
         self.int_settings = np.array([s.pre_sweeps, s.post_sweeps, s.coarsest_sweeps, s.window,
-                                      s.correct_pressurised_only, s.freeze_free_boundary, s.dry_keeps_own_equation],
+                                      s.correct_pressurised_only, s.freeze_free_boundary, s.dry_keeps_own_equation, 1],
                                      dtype=np.int64)
 
     # ------------------------------------------------------------------ operator pieces
@@ -318,7 +320,12 @@ class LineHierarchy:
 
     def freeze_dry(self, P: np.ndarray) -> None:
         """Hold the currently cavitated nodes of the finest grid (and their injections) at P = 0."""
-        dry = P <= 0.0
+        self.hold_dry(P <= 0.0)
+
+    def hold_dry(self, dry: np.ndarray) -> None:
+        """Hold the nodes of the finest grid where ``dry`` is set (and their injections) at P = 0; with mass-conserving
+        cavitation they keep solving for their film fraction (clipped at 1). Their pressures must be 0 already."""
+        dry = np.asarray(dry, dtype=np.bool_)
         for index in range(len(self.levels) - 1, -1, -1):
             level = self.levels[index]
             self.dry[level.k] = dry.copy()

@@ -79,8 +79,10 @@ from .line_multigrid import WARM_RULES
 from .line_multigrid import ROBUST, MultigridSettings, LineHierarchy, solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
+from .line_starved import solve_starved
 
-__all__ = ["TransientLineResult", "TransientLineSolver", "TransientScaling", "TransientStep", "transient_cycle"]
+__all__ = ["MENISCUS_SOLVES", "TransientLineResult", "TransientLineSolver", "TransientScaling", "TransientStep",
+           "meniscus_balance", "transient_cycle"]
 
 SCHEMES = ("bdf1", "bdf2")
 
@@ -252,6 +254,47 @@ MONITOR_RULES = attrs.evolve(WARM_RULES, load_floor=0.0)
 MASS_CONSERVING_RULES = attrs.evolve(MONITOR_RULES, estimate_remaining=False)
 
 
+#: solves of a starved step at most in its search for the meniscus (:meth:`TransientLineSolver._starved_step`)
+MENISCUS_SOLVES = 8
+#: a starved step places its meniscus by its mass balance (:meth:`TransientLineSolver._starved_step`) when the
+#: surfaces travel at least this many nodes in the step; slower, the film fractions' relaxation moves the meniscus
+#: (measured on the LS-1 flat follower, level 8: around the reversals, where the layer barely moves, the held
+#: layer's search diverged)
+MENISCUS_MIN_TRAVEL = 10.0
+
+
+def _checked_oil_layer(oil_layer, scaling: TransientScaling) -> float:
+    if not (isinstance(oil_layer, (int, float, np.floating)) and math.isfinite(oil_layer) and oil_layer > 0):
+        raise InputError(f"transient EHL: oil_layer = {oil_layer!r} m must be finite and > 0")
+    if scaling.problem.cavitation != "mass_conserving":
+        raise InputError(f"transient EHL: a starved inflow (oil_layer = {oil_layer!r} m) needs cavitation = "
+                         f"'mass_conserving', not {scaling.problem.cavitation!r} (clipping does not conserve the "
+                         "lubricant, so the layer would have no effect)")
+    return float(oil_layer)
+
+
+def meniscus_balance(P: np.ndarray, H: np.ndarray, problem: LineEHLProblem, s: float, j: int, h: float,
+                     layer: float, shift: float, dT: float) -> float:
+    """The mass balance of an inlet meniscus before node j of a step solved with the nodes before j held (arrays in
+    the flow's frame, inflow at index 0; s the speed ratio, h the spacing, reference scaling):
+
+    .. math::
+        g = F_{j+1/2} - |s|\\,q_{layer} - \\frac{\\Delta X_m}{\\Delta T}\\,(H_{j-1} - q_{layer}),\\qquad
+        F_{j+1/2} = |s|\\,\\tfrac{1}{2}(3 q_j - q_{j-1}) - \\xi_{j+1/2}\\,\\frac{P_{j+1} - P_j}{h}
+
+    F the discrete flux of the film through the face after node j as the kernels' conservative wedge has it (the
+    held node j - 1 full, q = rho H; :func:`camcontact.ehl._kernels.wedge_weight`), q_layer the content the
+    layer brings, and the last term the lubricant the pool ahead of the contact gives up as its meniscus moves
+    downstream by ``shift`` = Delta X_m in the step Delta T (implicit Euler). g = 0 is the meniscus's
+    conservation of mass (steady: the film passes exactly what the layer brings, the condition of
+    :func:`camcontact.ehl.line_starved.solve_starved`); g > 0: the meniscus lies too far upstream."""
+    rho = problem.density_ratio(P[j - 1:j + 2])
+    q = rho * H[j - 1:j + 2]
+    xi = problem.flow_coefficient(P[j:j + 2], H[j:j + 2])
+    flux = abs(s) * 0.5 * (3.0 * q[1] - q[0]) - 0.5 * float(xi[0] + xi[1]) * float(P[j + 1] - P[j]) / h
+    return float(flux - abs(s) * layer - shift / dT * (H[j - 1] - layer))
+
+
 @attrs.frozen
 class _Attempt:
     """One attempt of :meth:`TransientLineSolver._solve`, as :func:`camcontact.ehl.attempts.run_ladder` wants it."""
@@ -297,11 +340,17 @@ class TransientLineSolver:
         first cycle is measured from the start). Measured on the LS-1 roller turn (720 steps, level 7, 5 %
         slip, F-cycles): 2.7 instead of 3.6 cycles per step with both, 3.1 with the stop rule alone; h_min the
         same to 1e-3 nm.
+    oil_layer : float, optional
+        A starved inflow [m]: the lubricant layer (both surfaces together, at ambient density) that the surfaces
+        carry into the domain at its inflow end, whichever end that is (needs the scaling's cavitation
+        ``"mass_conserving"``; None: both ends are flooded reservoirs). The inlet meniscus, where the layer fills
+        the gap, is placed where its mass balance holds (:func:`meniscus_balance`; see :meth:`_starved_step`); the steady start is
+        the starved steady solution (:func:`~camcontact.ehl.line_starved.solve_starved`).
     """
 
     def __init__(self, scaling: TransientScaling, levels: int = 8, *, scheme: str = "bdf2", tolerance: float = 1e-6,
                  settings: MultigridSettings | None = None, strict: bool = False, compiled: bool = True,
-                 keep_fields: bool = False, predictor: bool = True):
+                 keep_fields: bool = False, predictor: bool = True, oil_layer: float | None = None):
         if not (isinstance(levels, (int, np.integer)) and 2 <= levels <= 16):
             raise InputError(f"transient EHL: levels = {levels!r}; allowed 2..16")
         if scheme not in SCHEMES:
@@ -321,6 +370,11 @@ class TransientLineSolver:
         self.compiled = compiled
         self.keep_fields = keep_fields
         self.predictor = bool(predictor)
+        #: the inflow's lubricant layer as content h_oil R_r/b_r^2 (infinite: flooded ends) and the tracked inlet
+        #: meniscus X_m [-] of the current state (None: none tracked; see ``oil_layer``)
+        self.oil_layer = None if oil_layer is None else _checked_oil_layer(oil_layer, scaling)
+        self.supply = math.inf if self.oil_layer is None else self.oil_layer / scaling.h_scale
+        self.meniscus: float | None = None
         #: (P, H0, speed ratio s) before the last step, if that step converged: the predictor's second state
         self.before: tuple[np.ndarray, float, float | None] | None = None
         self.s_current: float | None = None  #: the speed ratio of the current state (None: a given state)
@@ -350,6 +404,7 @@ class TransientLineSolver:
             if mirrored:
                 problem = attrs.evolve(problem, domain=(-problem.domain[1], -problem.domain[0]))
             hierarchy = self._hierarchies[key] = _TransientHierarchy(problem, self.levels, settings, self.compiled)
+            hierarchy.supply = self.supply
         return hierarchy
 
     # ------------------------------------------------------------------ conditions
@@ -391,6 +446,7 @@ class TransientLineSolver:
         self.q_history = [self.content(self.P, H)]
         self.dt_previous = None
         self.before, self.s_current = None, None
+        self.meniscus = None
 
     def steady_start(self, time_: float, w: float, R: float, u_m: float) -> TransientStep:
         """Start at ``time_`` [s] from the steady solution of the instant with load w [N/m], radius R [m]
@@ -417,15 +473,27 @@ class TransientLineSolver:
         start = time.perf_counter()
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ConvergenceWarning)
-            steady = solve_multigrid(own, self.levels, tolerance=min(self.tolerance, 1e-7))
+            if self.oil_layer is None:
+                steady = solve_multigrid(own, self.levels, tolerance=min(self.tolerance, 1e-7))
+            else:
+                own = attrs.evolve(own, cavitation="mass_conserving", supply=self.oil_layer * R / (b0 * b0))
+                steady = solve_starved(own, self.levels, tolerance=min(self.tolerance, 1e-7))
         p_own = 2.0 * w / (math.pi * b0)
-        P = np.interp(sigma * self.X * sc.b / b0, steady.X, steady.P, left=0.0, right=0.0) * p_own / sc.p_h
+        X_own = sigma * self.X * sc.b / b0  # the reference nodes in the instant's own units
+        P = np.interp(X_own, steady.X, steady.P, left=0.0, right=0.0) * p_own / sc.p_h
         P[0] = P[-1] = 0.0
         H_c = steady.H_c * (b0 * b0 / R) / sc.h_scale
         H_rel = self.film(P, 0.0, R)
         H0 = H_c - float(np.interp(0.0, self.X, H_rel))
         self.theta = np.ones(self.n)
-        step = self._solve(P, H0, curvature, s, 0.0, np.zeros(self.n), f_load, start, "steady start")
+        if self.oil_layer is None or steady.inlet_meniscus is None:
+            step = self._solve(P, H0, curvature, s, 0.0, np.zeros(self.n), f_load, start, "steady start")
+        else:  # the starved start: its meniscus found again on this grid, as a step's (steady: dT infinite)
+            self.theta = np.minimum(np.interp(X_own, steady.X, steady.film_fraction), 1.0)
+            self.meniscus = sigma * steady.inlet_meniscus * b0 / sc.b
+            self.P, self.H0, self.s_current = P, H0, s
+            step = self._starved_step(P, H0, curvature, s, 0.0, np.zeros(self.n), f_load, start, "steady start",
+                                      math.inf, R)
         self.P, self.H0, self.time = step[0], step[1], float(time_)
         H = step[2]
         self.q_history = [self.content(self.P, H)]
@@ -454,8 +522,14 @@ class TransientLineSolver:
         start = time.perf_counter()
         P_start, H0_start = self._predicted(dt, s)
         before = (self.P, self.H0, self.s_current)
-        P, H0, H, record = self._solve(P_start, H0_start, curvature, s, a0 / dT, f, f_load, start,
-                                       f"t = {time_:.6g} s")
+        label = f"t = {time_:.6g} s"
+        if self.oil_layer is None or abs(s) * dT < MENISCUS_MIN_TRAVEL * (self.X[1] - self.X[0]):
+            # flooded ends, or so slow a flow that the film fractions' relaxation keeps up with the meniscus
+            P, H0, H, record = self._solve(P_start, H0_start, curvature, s, a0 / dT, f, f_load, start, label)
+            self.meniscus = None
+        else:
+            P, H0, H, record = self._starved_step(P_start, H0_start, curvature, s, a0 / dT, f, f_load, start, label,
+                                                  dT, R)
         self.before = before if record.converged else None
         self.s_current = s
         self.P, self.H0 = P, H0
@@ -486,8 +560,128 @@ class TransientLineSolver:
             theta=self.theta.copy() if self.keep_fields else None,
         )
 
-    def _solve(self, P, H0, curvature, s, c_t, f, f_load, start, label):
-        """Converge one instant; the robustness ladder on failure; warn/raise when not converged."""
+    def _starved_step(self, P, H0, curvature, s, c_t, f, f_load, start, label, dT, R):
+        """A step with a starved inflow: the contact fed through an inlet meniscus where its mass balance holds
+        (:func:`meniscus_balance`).
+
+        The layer upstream of the meniscus is unpressurised and moves with the surfaces: its content at the
+        step's end is the last state's content at X - s dT (the supply beyond the inflow end; after a reversal,
+        the film the contact left on that side). Those nodes are held (the top level relaxes only from the
+        first node j after the meniscus on, the two held nodes before it full, as the truncated inlet of
+        :func:`camcontact.ehl.line_starved.solve_starved`), the step is solved, and the balance g of node j picks
+        the next trial by secant steps over the node index, from the last step's meniscus (after a reversal, or
+        from a state without one, from the first pressurised node seen from the new inflow end), at most
+        :data:`MENISCUS_SOLVES` solves. The meniscus lies between the two nodes where g changes sign: the step's
+        state is the two held solutions weighted linearly so that g vanishes (the meniscus between nodes, as
+        solve_starved's is a continuous unknown; measured at level 7, M ~ 4: the nearer node alone put rho_c h_c
+        1.7 % off the layer). A step whose search does not bracket the sign change keeps its smallest |g| and
+        is flagged not converged.
+
+        Why not let the film fractions' relaxation find the meniscus (the mass-conserving kernels can): it moves
+        it by about a node per 6-40 cycles (:mod:`camcontact.ehl.line_starved`) and its front between a partly
+        filled node and the first pressurised one does not converge while it moves (measured: the LS-1 flat
+        follower, level 8, 1 degree steps: 166-176 of the 180 lift steps stagnated, held or not at their
+        meniscus, the films 3-10 % off between 10 and 39 cycles per step). Node positions: the meniscus is
+        placed between nodes by that weighting."""
+        sign = 1.0 if s > 0.0 else -1.0
+        frame = (lambda a: a) if sign > 0.0 else (lambda a: a[::-1].copy())
+        h = float(self.X[1] - self.X[0])
+        X_flow = frame(sign * self.X)
+        H_last = self.film(self.P, self.H0, R)
+        tracked = self.meniscus is not None and self.s_current is not None and self.s_current * s > 0.0
+        if tracked:
+            j = int(np.searchsorted(X_flow, sign * self.meniscus))
+        else:
+            wet = np.flatnonzero(frame(self.P) > 0.0)
+            j = int(wet[0]) if wet.size else -1
+        if j < 4:  # pressurised up to the inflow end (or nowhere): no meniscus in the domain
+            self.meniscus = None
+            return self._solve(P, H0, curvature, s, c_t, f, f_load, start, label)
+        X_before = sign * self.meniscus if tracked else X_flow[j] - 0.5 * h  # the meniscus at the step's start
+        layer = np.interp(X_flow - abs(s) * dT, X_flow, np.maximum(frame(self.content(self.P, H_last)), 0.0),
+                          left=self.supply)
+        H_held = frame(H_last)
+        theta_start = self.theta.copy()
+        last = self.X.size - 3
+        tried: dict[int, tuple] = {}
+
+        def balance(j: int) -> float:
+            theta = np.ones(self.X.size)
+            theta[:j] = np.clip(layer[:j] / np.maximum(H_held[:j], 1e-300), 0.0, 1.0)
+            theta[j - 2:j] = 1.0  # the truncated inlet: the film enters node j full
+            self.theta = frame(theta)
+            solved = [k for k in tried if tried[k] is not None]
+            near = min(solved, key=lambda k: abs(k - j)) if solved else None
+            start_P = frame(P if near is None else tried[near][0][0])
+            start_P[:j] = 0.0
+            try:
+                result = self._solve(frame(start_P), H0 if near is None else tried[near][0][1], curvature, s, c_t,
+                                     f, f_load, start, label, held=j)
+            except ConvergenceError:  # held into the contact: taken as a meniscus too far downstream
+                tried[j] = None
+                return -math.inf
+            P_f, H_f = frame(result[0]), frame(result[2])
+            g = meniscus_balance(P_f, H_f, self.problem, s, j, h, float(layer[j - 1]), X_flow[j] - 0.5 * h - X_before,
+                                 dT)
+            theta = frame(self.theta)
+            theta[:j] = np.clip(layer[:j] / np.maximum(H_f[:j], 1e-300), 0.0, 1.0)  # the held layer, as it is
+            tried[j] = (result, frame(theta), g)
+            return g
+
+        g = balance(j)
+        low = high = None  # the nearest nodes with g > 0 (meniscus too far upstream) and g <= 0
+        j_other, g_other = None, None
+        for _ in range(MENISCUS_SOLVES - 1):
+            if g > 0.0:
+                low = j if low is None else max(low, j)
+            else:
+                high = j if high is None else min(high, j)
+            if low is not None and high is not None and high - low <= 1:
+                break
+            if j_other is None or g == g_other or not (math.isfinite(g) and math.isfinite(g_other)):
+                step = 2.0 if g > 0.0 else -2.0
+            else:  # secant over the node index, inside the bracket once there is one
+                step = -g * (j - j_other) / (g - g_other)
+            j_next = int(round(j + max(min(step, 64.0), -64.0)))
+            if low is not None and high is not None and not low < j_next < high:
+                j_next = (low + high) // 2
+            elif j_next == j:
+                j_next = j + (1 if g > 0.0 else -1)
+            j_next = min(max(j_next, 4), last)
+            if j_next in tried:
+                break
+            j_other, g_other = j, g
+            j, g = j_next, balance(j_next)
+        if all(value is None for value in tried.values()):  # every trial failed: the film fractions alone
+            self.theta = theta_start
+            self.meniscus = None
+            return self._solve(P, H0, curvature, s, c_t, f, f_load, start, label)
+        pair = [k for k in tried if k + 1 in tried and tried[k] is not None and tried[k + 1] is not None
+                and tried[k][2] * tried[k + 1][2] <= 0.0]
+        if pair:  # between the two nodes: the states weighted so that the balance vanishes
+            k = pair[0]
+            (first, theta_first, g_first), (second, theta_second, g_second) = tried[k], tried[k + 1]
+            weight = g_first / (g_first - g_second) if g_first != g_second else 0.0
+            kept = first if weight <= 0.5 else second
+            result = (first[0] + weight * (second[0] - first[0]), first[1] + weight * (second[1] - first[1]),
+                      first[2] + weight * (second[2] - first[2]),
+                      attrs.evolve(kept[3], converged=first[3].converged and second[3].converged))
+            self.theta = theta_first + weight * (theta_second - theta_first)
+            self.meniscus = sign * (X_flow[k] - 0.5 * h + weight * h)
+            return result
+        chosen = min((k for k in tried if tried[k] is not None), key=lambda k: abs(tried[k][2]))
+        result, theta, g = tried[chosen]
+        note = f"starved meniscus not bracketed in {len(tried)} solves (mass balance {g:.3g})"
+        result = (*result[:3], attrs.evolve(result[3], converged=False,
+                                            message=(result[3].message + "; " if result[3].message else "") + note))
+        self.theta = theta
+        self.meniscus = sign * (X_flow[chosen] - 0.5 * h)
+        return result
+
+    def _solve(self, P, H0, curvature, s, c_t, f, f_load, start, label, held=None):
+        """Converge one instant; the robustness ladder on failure; warn/raise when not converged. ``held``: the
+        nodes before this index, counted from the inflow end, are held unpressurised with their film fractions
+        (the layer upstream of a starved meniscus; their pressures 0 in P)."""
         if c_t == 0.0 and s == 0.0:
             raise InputError("transient EHL: u_m = 0 without a time step has no solution")
         # reversed flow (s < 0) is solved on the mirrored grid with s > 0: the Gauss-Seidel sweeps
@@ -499,13 +693,19 @@ class TransientLineSolver:
         def attempt(settings):
             hierarchy = self._hierarchy(settings, mirrored)
             hierarchy.set_conditions(curvature, abs(s), c_t)
+            if held is not None:  # in the flow's frame, the solve's
+                hierarchy.hold_dry(np.arange(self.n) < held)
+                hierarchy.int_settings[7] = held
             theta = hierarchy.theta(hierarchy.levels[-1])
             theta[:] = flip(self.theta)  # every attempt starts from the film fraction of the last step
             if self.flow is None:
                 hierarchy.set_flow_factor(np.ones(self.n))
             else:
                 hierarchy.set_flow_factor(flip(self.flow[0]), None if self.flow[1] is None else flip(self.flow[1]))
-            P_new, H0_new, H, record = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
+            try:
+                P_new, H0_new, H, record = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
+            finally:
+                hierarchy.int_settings[7] = 1
             return _Attempt(P=flip(P_new), H0=H0_new, H=flip(H), record=record, settings=settings,
                             theta=flip(theta))
 
@@ -531,6 +731,7 @@ class TransientLineSolver:
                 raise ConvergenceError("non-finite state")
             r = hierarchy.residual(finest, P, H) - f
             r[0] = r[-1] = 0.0
+            r[:hierarchy.int_settings[7]] = 0.0  # held nodes (a starved inlet's layer) solve no equation
             r = np.where((P > 0.0) | (hierarchy.theta(finest) < 1.0), r, np.maximum(r, 0.0))
             if watch.after_cycle(P, hierarchy.watched(finest, P, H, H0), float(np.mean(np.abs(r[1:-1])) * finest.h),
                                  hierarchy.load(finest, P) - f_load, hierarchy.work - work0):
@@ -574,7 +775,8 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
                     reference: dict | None = None, domain: tuple | None = None,
                     settings: MultigridSettings | None = None, initial: tuple | None = None,
                     keep_fields: bool = False, strict: bool = False, compiled: bool = True,
-                    cavitation: str = "reynolds", after_step=None, predictor: bool = True) -> TransientLineResult:
+                    cavitation: str = "reynolds", after_step=None, predictor: bool = True,
+                    oil_layer: float | None = None) -> TransientLineResult:
     """Transient line-contact films over a sequence of instants (e.g. a cam cycle).
 
     Parameters
@@ -623,6 +825,9 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         :func:`camcontact.ehl.line_thermal.thermal_transient_cycle`).
     predictor : bool
         Start each step from the linear extrapolation of the last two states (:class:`TransientLineSolver`).
+    oil_layer : float, optional
+        A starved inflow [m]: the lubricant layer the surfaces bring to the contact (both together), with
+        ``cavitation="mass_conserving"`` (:class:`TransientLineSolver`); None: flooded domain ends.
 
     Returns
     -------
@@ -658,7 +863,8 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
                                               density=density, p0=p0, elastic=elastic, domain=tuple(domain),
                                               cavitation=cavitation)
     solver = TransientLineSolver(scaling, levels, scheme=scheme, tolerance=tolerance, settings=settings,
-                                 strict=strict, compiled=compiled, keep_fields=keep_fields, predictor=predictor)
+                                 strict=strict, compiled=compiled, keep_fields=keep_fields, predictor=predictor,
+                                 oil_layer=oil_layer)
     steps = []
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", ConvergenceWarning)
