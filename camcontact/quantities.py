@@ -100,6 +100,8 @@ QUANTITIES: dict[str, QuantitySpec] = {
         _q("thermal_factor", "", "", "inlet shear-heating film reduction factor phi_T"),
         _q("h_c", "m", "um", "central film thickness"),
         _q("h_min", "m", "um", "minimum film thickness"),
+        _q("x_min", "m", "um", "position of the minimum film from the contact centre, positive in the direction of "
+                               "positive entrainment u_m (transient film)"),
         _q("sigma", "m", "um", "composite RMS roughness"),
         _q("Lambda_c", "", "", "specific film thickness h_c/sigma"),
         _q("Lambda_min", "", "", "specific film thickness h_min/sigma"),

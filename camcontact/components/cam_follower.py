@@ -67,6 +67,11 @@ class CamFollower(Component):
         Summit radius β [length] (> 0) for ``mixed``; default: σ/β = 0.05. Both defaults are orders of
         magnitude of ground steel surfaces as Stribeck-curve models use them (Gelinck & Schipper 2000),
         not data: give measured values where known (:mod:`camcontact.contact.asperity_contact`).
+    oil_layer : Quantity or str, optional
+        The lubricant layer the surfaces carry into the contact, both together, at ambient density [length]
+        (> 0): a starved contact (splash or mist lubrication). Solved by the transient march only: the effect
+        ``squeeze`` with the film model ``Multigrid(cavitation="mass_conserving")``
+        (:class:`~camcontact.ehl.line_transient.TransientLineSolver`'s ``oil_layer``). Default: flooded.
     name : str
     """
 
@@ -89,6 +94,7 @@ class CamFollower(Component):
     cycles: int = attrs.field(default=3)
     asperity_density: Quantity = quantity_field("1/[length]**2", optional=True, validators=[positive("1/m^2")])
     asperity_radius: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
+    oil_layer: Quantity = quantity_field("[length]", optional=True, validators=[positive("m")])
 
     @cycles.validator
     def _check_cycles(self, attribute, value):

@@ -153,6 +153,8 @@ class TransientStep:
     H: np.ndarray = attrs.field(repr=False, eq=False, default=None)
     #: film fraction theta [-] on the reference grid (``keep_fields`` only, else None; 1 unless mass-conserving)
     theta: np.ndarray = attrs.field(repr=False, eq=False, default=None)
+    #: position of the minimum film [m] from the contact centre, positive in the direction of positive u_m
+    x_min: float = float("nan")
 
 
 @attrs.frozen
@@ -180,6 +182,9 @@ class TransientLineResult:
     wall_time: float = 0.0
     #: film fraction per instant and node (``keep_fields`` only)
     theta: np.ndarray | None = None
+    #: position of the minimum film per instant [m] from the contact centre, positive in the direction of positive
+    #: u_m (where the film is thinnest: the exit constriction, or upstream as the entrainment reverses)
+    x_min: np.ndarray | None = None
 
     @property
     def H_c(self) -> np.ndarray:
@@ -557,7 +562,7 @@ class TransientLineSolver:
             time=float(time_), h_c=float(np.interp(0.0, self.X, H)) * sc.h_scale, h_min=float(H.min()) * sc.h_scale,
             p_max=float(self.P.max()) * sc.p_h, H0=self.H0, record=record,
             P=self.P.copy() if self.keep_fields else None, H=H.copy() if self.keep_fields else None,
-            theta=self.theta.copy() if self.keep_fields else None,
+            theta=self.theta.copy() if self.keep_fields else None, x_min=float(self.X[int(np.argmin(H))]) * sc.b,
         )
 
     def _starved_step(self, P, H0, curvature, s, c_t, f, f_load, start, label, dT, R):
@@ -897,5 +902,5 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         records=tuple(s.record for s in steps), scaling=scaling, scheme=scheme, X=solver.X,
         P=np.array([s.P for s in steps]) if keep_fields else None,
         H=np.array([s.H for s in steps]) if keep_fields else None, wall_time=time.perf_counter() - start,
-        theta=np.array([s.theta for s in steps]) if keep_fields else None,
+        theta=np.array([s.theta for s in steps]) if keep_fields else None, x_min=np.array([s.x_min for s in steps]),
     )

@@ -37,7 +37,9 @@ from typing import Any
 
 from ..components.cam_follower import CamFollower
 from ..contact.geometry import reduced_modulus
+from ..errors import InputError
 from ..step_graph import SceneGraph, Step, checked_request, given, scene_builder
+from ..units import format_quantity
 from ..steps.contact import cycle_hertz
 from ..steps.film import (film_parameter, films_of, resolve_film_model, solves_rheology, thermal_films,
                           with_traction_rheology)
@@ -65,7 +67,7 @@ DEFAULT_MODELS = {"film": "pan_hamrock", "friction": "coulomb", "wear": "archard
                   "traction": None}
 PER_ANGLE = frozenset((
     "cam_angle", *FOLLOWER_KINEMATICS, *FORCES_1DOF, "normal_force", "w", "b", "p_h", "approach", "U", "G", "W", "M",
-    "L", "h_c", "h_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_temperature_rise", "film_thermal", "film_regime", "film_valid", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
+    "L", "h_c", "h_min", "x_min", "h_c_isothermal", "h_min_isothermal", "thermal_loading_m", "thermal_factor", "thermal_valid", "film_temperature_rise", "film_thermal", "film_regime", "film_valid", "H0", "H_min", "H_c", "spike_pressure", "pressure_spike", "Lambda_min", "friction_force",
     "friction_coefficient", "friction_power", "wear_rate", "contact_open", "tangential_force", "friction_torque",
     "cam_torque_with_friction", "friction_arm", *(q for q in ROLLER_OUTPUTS if q != "roller_cycle"),
     "asperity_load_fraction", "h_c_mixed", "Lambda_mixed", "lubrication_regime", "asperity_capacity", "mixed_valid",
@@ -123,7 +125,7 @@ def cam_follower_inputs(scene: CamFollower, effects: frozenset) -> dict[str, Any
         if full_turn(scene.cam_angles):  # the spin dynamics integrate over the turn (else named up front)
             inputs["roller_inertia"] = follower.roller_inertia_si(cam.si.width)
     return inputs | given(hardness=cam.material.si.hardness, sigma1=cam.si.roughness, sigma2=follower.si.roughness,
-                          traction_limit_coefficient=scene.friction_coefficient)
+                          traction_limit_coefficient=scene.friction_coefficient, oil_layer=scene.si.oil_layer)
 
 
 def cycle_film_steps(film_model: Any, effects: frozenset) -> list[Step]:
@@ -136,11 +138,28 @@ def cycle_film_steps(film_model: Any, effects: frozenset) -> list[Step]:
         reads = {"extra": ("effusivity",)} if film_model.thermal else {"optional": ("effusivity",)}
         return [Step.of(thermal_transient_films, **reads)]
     film = transient_films if "squeeze" in effects else quasi_steady_films
+    # the transient march: a starved inflow (CamFollower.oil_layer) and where its film is thinnest
+    starved = {"optional": ("oil_layer",)} if "squeeze" in effects else {}
+    provides = (*films, "film_regime", "film_valid", "film_solutions") + (("x_min",) if "squeeze" in effects else ())
     if "thermal" not in effects:
-        return [Step.of(film, provides=(*films, "film_regime", "film_valid", "film_solutions"))]
+        return [Step.of(film, provides=provides, **starved)]
     isothermal = {name: f"{name}_isothermal" for name in films}
-    return [Step.of(film, provides=(*films, "film_regime", "film_valid", "film_solutions"), rename=isothermal),
+    return [Step.of(film, provides=provides, rename=isothermal, **starved),
             Step.of(cycle_inlet_thermal), Step.of(thermal_films, extra=tuple(isothermal.values()), provides=films)]
+
+
+def check_starved(scene: CamFollower, film_model: Any, effects: frozenset) -> None:
+    """InputError unless a starved cam contact (``oil_layer``) is solved by the mass-conserving transient march."""
+    model = resolve_film_model(film_model, effects=effects, enable=())
+    conserving = getattr(model, "name", "") == "multigrid" and getattr(model, "cavitation", "") == "mass_conserving"
+    rheology = "squeeze" in effects and ({"thermal", "non_newtonian"} & effects)
+    if not ("squeeze" in effects and conserving) or rheology:
+        raise InputError(
+            f"CamFollower {scene.name!r}: oil_layer = {format_quantity(scene.oil_layer)} (a starved contact) is solved "
+            "by the isothermal transient march only: effects including 'squeeze' (without 'thermal' or "
+            "'non_newtonian') and models={'film': Multigrid(cavitation='mass_conserving')}; got "
+            f"effects {sorted(effects)} and the film model {getattr(model, 'name', model)!r}"
+            + (f" with cavitation {model.cavitation!r}" if getattr(model, "name", "") == "multigrid" else ""))
 
 
 @scene_builder(CamFollower)
@@ -149,6 +168,8 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
     effects = checked_request("cam_follower", models, effects, slots=sorted(DEFAULT_MODELS),
                               supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
     chosen, models = models, {**DEFAULT_MODELS, **models}
+    if scene.oil_layer is not None:
+        check_starved(scene, models["film"], effects)
     traction = fluid_traction_model(scene.lubricant, effects, models["traction"])
     # the transient march solves the thermal / non-Newtonian film itself with the multigrid model (a quasi-steady
     # turn corrects its films by the inlet shear-heating formula)

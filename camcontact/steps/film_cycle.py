@@ -207,13 +207,16 @@ def _in_order(order, *series) -> list[np.ndarray]:
     return out
 
 
-@step("film", provides=FILM_OUTPUTS, model=lambda film_model: f"{model_name(film_model)} (transient, squeeze)",
-      version=model_version, check=check_squeeze)
+@step("film", provides=(*FILM_OUTPUTS, "x_min"),
+      model=lambda film_model: f"{model_name(film_model)} (transient, squeeze)", version=model_version,
+      check=check_squeeze)
 def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lubricant_state, density_law,
-                    contact_open, film_speed_factor, piezoviscosity, cam_angle, angular_speed):
+                    contact_open, film_speed_factor, piezoviscosity, cam_angle, angular_speed, **inputs):
     """Films [m] over the turn from one transient march with the squeeze term (the ``squeeze`` effect):
     implicit BDF2 steps from angle to angle through any entrainment reversal, from the steady film at
-    the steadiest angle; needs contact and a constant cam speed at every angle."""
+    the steadiest angle; needs contact and a constant cam speed at every angle. Optional ``oil_layer`` [m]: a
+    starved inflow (the film model's cavitation ``"mass_conserving"``; :class:`~camcontact.ehl.line_transient.
+    TransientLineSolver`), whose march starts from the steady starved film."""
     from ..ehl.line_transient import transient_cycle
 
     u = np.asarray(u_m, dtype=float) * film_speed_factor
@@ -222,18 +225,19 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
         times, np.asarray(w)[order], np.asarray(R)[order], u[order], E_reduced=E_reduced, eta0=eta0,
         **march_laws(lubricant_state, piezoviscosity, alpha_effective), density=density_law,
         levels=film_model.levels, tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict,
-        cavitation=getattr(film_model, "cavitation", "reynolds"))
-    h_c, h_min, converged = _in_order(order, result.h_c, result.h_min, np.asarray(result.converged, dtype=bool))
+        cavitation=getattr(film_model, "cavitation", "reynolds"), oil_layer=inputs.get("oil_layer"))
+    h_c, h_min, x_min, converged = _in_order(order, result.h_c, result.h_min, result.x_min,
+                                             np.asarray(result.converged, dtype=bool))
     messages = _in_order(order, np.array([record.message for record in result.records], dtype=object))[0]
     regime = np.empty(u.size, dtype=object)
     for i in range(u.size):
         note = "transient (squeeze)" + (" at u_m = 0" if u[i] == 0.0 else "")
         regime[i] = note if converged[i] else f"{note}: not converged: {messages[i]}"
     return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged,
-            "film_solutions": [None] * u.size}
+            "film_solutions": [None] * u.size, "x_min": x_min}
 
 
-@step("film", provides=(*FILM_OUTPUTS, "film_temperature_rise", "film_thermal"),
+@step("film", provides=(*FILM_OUTPUTS, "film_temperature_rise", "film_thermal", "x_min"),
       model=lambda film_model: f"{model_name(film_model)} (transient, squeeze, "
                                f"{'thermal' if film_model.thermal else 'non-Newtonian'})",
       version=model_version, check=check_squeeze)
@@ -276,8 +280,9 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     films = result.films
     energy = np.asarray(result.thermal, dtype=bool)  # the energy equation ran after the instant's film
     heated = np.concatenate([[False], energy[:-1]])  # the instant's film took the last instant's flow factors
-    h_c, h_min, converged, energy, heated, rise = _in_order(
-        order, films.h_c, films.h_min, np.asarray(films.converged, dtype=bool), energy, heated, result.temperature_rise)
+    h_c, h_min, x_min, converged, energy, heated, rise = _in_order(
+        order, films.h_c, films.h_min, films.x_min, np.asarray(films.converged, dtype=bool), energy, heated,
+        result.temperature_rise)
     messages = _in_order(order, np.array([record.message for record in films.records], dtype=object))[0]
     kind = "thermal" if film_model.thermal else "non-Newtonian"
     regime = np.empty(u.size, dtype=object)
@@ -287,7 +292,7 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
                 + ("the march's start" if i == first else "a surface did not move with the entrainment"))
         regime[i] = note if converged[i] else f"{note}: not converged: {messages[i]}"
     return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged,
-            "film_solutions": [None] * u.size,
+            "film_solutions": [None] * u.size, "x_min": x_min,
             "film_temperature_rise": np.where(energy & film_model.thermal, rise, np.nan),
             "film_thermal": energy & film_model.thermal}
 

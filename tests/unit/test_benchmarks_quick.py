@@ -166,3 +166,18 @@ def test_thermal_cam_cycle_quick(tmp_path):
     assert frame["max film rise [K]"].iloc[1] > frame["max film rise [K]"].iloc[0] > 0
     traction = frame["mean traction [-]"]
     assert traction.iloc[0] == pytest.approx(0.0, abs=1e-12) and traction.iloc[1] > 0
+
+
+def test_starved_cam_cycle_quick(tmp_path):
+    """benchmarks/starved_cam_cycle.py --quick: the LS-1 flat follower's transient turn with clipping, with
+    mass-conserving cavitation and with a 0.3 um oil layer; the starved flanks carry the layer, the thinnest film
+    of every run lies just after the second reversal (timings never asserted)."""
+    frame = _load("starved_cam_cycle").main(["--quick", "--out", str(tmp_path)])
+    assert (tmp_path / "starved_cam_cycle.csv").exists() and (tmp_path / "starved_cam_cycle_turns.csv").exists()
+    assert list(frame["run"]) == ["reynolds", "flooded", "starved 0.3 um"]
+    by_run = frame.set_index("run")
+    assert by_run.loc["starved 0.3 um", "h_c fastest flank [nm]"] == pytest.approx(275.0, rel=0.03)
+    assert by_run.loc["flooded", "h_c fastest flank [nm]"] > 2000.0
+    assert (frame["at cam angle [deg]"].between(100.0, 125.0)).all()
+    assert by_run.loc["starved 0.3 um", "h_min over turn [nm]"] < by_run.loc["flooded", "h_min over turn [nm]"]
+    assert (frame["not converged"] <= 8).all()
