@@ -48,7 +48,10 @@ conservative settings of :data:`camcontact.ehl.line_multigrid.ROBUST`. Cavitatio
 cavitated region is not tracked); with ``cavitation="mass_conserving"`` the Jakobsson–Floberg–Olsson film
 fraction theta (:mod:`camcontact.ehl._kernels`) is solved in every step and carried to the next: the time
 derivative acts on the content theta rho H, so that what the contact leaves behind is what it meets when the
-entrainment reverses. Both ends of the domain are flooded reservoirs (theta = 1 at the inflow boundary).
+entrainment reverses. Both ends of the domain are flooded reservoirs (theta = 1 at the inflow boundary), unless a
+starved inflow is given (``oil_layer``): the surfaces then bring a layer of that thickness at whichever end the flow
+enters, and each step places the inlet meniscus where its mass balance holds
+(:meth:`TransientLineSolver._starved_step`, :func:`meniscus_balance`).
 
 The march starts from the steady solution of the first instant (which needs u_m != 0) or from
 a given state. Per step it returns h_c = H(0) b_r^2/R_r, h_min, p_max, H0 and a convergence
@@ -823,7 +826,7 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         Cavitation by clipping (the lubricant of a cavitated region is not tracked), or the
         Jakobsson–Floberg–Olsson film fraction carried from step to step: the history of the time
         derivative is the content theta rho H, so that lubricant left behind the contact is what returns
-        to it when the entrainment reverses (both domain ends are flooded reservoirs).
+        to it when the entrainment reverses (both domain ends are flooded reservoirs, unless ``oil_layer``).
     after_step : callable, optional
         ``after_step(i, solver)`` after the start (i = 0) and after each step i: it may read the
         :class:`TransientLineSolver`'s state and set its ``flow`` factors for the next steps (the thermal march,
