@@ -27,7 +27,9 @@ lubricant's thermal conductivity and its temperature–viscosity coefficient). W
 surfaces' flash temperatures after every step, with ``film_temperature_rise`` [K] per angle (and
 ``film_thermal``, where the energy equation ran) in place of the formula's ``thermal_factor`` (needs the
 lubricant's density, specific heat, conductivity and temperature–viscosity coefficient and both materials'
-thermal data).
+thermal data). A starved contact (``CamFollower.oil_layer``, the layer the surfaces bring) is solved by the
+isothermal transient march only: ``squeeze`` with ``Multigrid(cavitation="mass_conserving")``
+(:func:`check_starved` refuses anything else); its films come with ``x_min``, where the film is thinnest.
 """
 
 from __future__ import annotations
