@@ -69,8 +69,9 @@ class CamFollower(Component):
         not data: give measured values where known (:mod:`camcontact.contact.asperity_contact`).
     oil_layer : Quantity or str, optional
         The lubricant layer the surfaces carry into the contact, both together, at ambient density [length]
-        (> 0): a starved contact (splash or mist lubrication). Solved by the transient march only: the effect
-        ``squeeze`` with the film model ``Multigrid(cavitation="mass_conserving")``
+        (> 0): a starved contact (splash or mist lubrication). Solved by the transient march only (isothermal, or
+        with ``thermal`` / ``non_newtonian``): the effect ``squeeze`` with the film model
+        ``Multigrid(cavitation="mass_conserving")``
         (:class:`~camcontact.ehl.line_transient.TransientLineSolver`'s ``oil_layer``). Default: flooded.
     name : str
     """

@@ -282,7 +282,7 @@ def _checked_oil_layer(oil_layer, scaling: TransientScaling) -> float:
 
 
 def meniscus_balance(P: np.ndarray, H: np.ndarray, problem: LineEHLProblem, s: float, j: int, h: float,
-                     layer: float, shift: float, dT: float) -> float:
+                     layer: float, shift: float, dT: float, factor: np.ndarray | None = None) -> float:
     """The mass balance of an inlet meniscus before node j of a step solved with the nodes before j held (arrays in
     the flow's frame, inflow at index 0; s the speed ratio, h the spacing, reference scaling):
 
@@ -295,10 +295,14 @@ def meniscus_balance(P: np.ndarray, H: np.ndarray, problem: LineEHLProblem, s: f
     layer brings, and the last term the lubricant the pool ahead of the contact gives up as its meniscus moves
     downstream by ``shift`` = Delta X_m in the step Delta T (implicit Euler). g = 0 is the meniscus's
     conservation of mass (steady: the film passes exactly what the layer brings, the condition of
-    :func:`camcontact.ehl.line_starved.solve_starved`); g > 0: the meniscus lies too far upstream."""
+    :func:`camcontact.ehl.line_starved.solve_starved`); g > 0: the meniscus lies too far upstream. ``factor``: the
+    flow factors of nodes j and j + 1 on the Poiseuille coefficient (a thermal or Eyring film,
+    :func:`camcontact.ehl._kernels.flow_factor`; None: 1)."""
     rho = problem.density_ratio(P[j - 1:j + 2])
     q = rho * H[j - 1:j + 2]
     xi = problem.flow_coefficient(P[j:j + 2], H[j:j + 2])
+    if factor is not None:
+        xi = xi * factor
     flux = abs(s) * 0.5 * (3.0 * q[1] - q[0]) - 0.5 * float(xi[0] + xi[1]) * float(P[j + 1] - P[j]) / h
     return float(flux - abs(s) * layer - shift / dT * (H[j - 1] - layer))
 
@@ -629,8 +633,13 @@ class TransientLineSolver:
                 tried[j] = None
                 return -math.inf
             P_f, H_f = frame(result[0]), frame(result[2])
+            factor = None
+            if self.flow is not None:  # the film's flow factors (thermal / Eyring march), a sqrt(1 + (k eta-bar)^2)
+                a = frame(self.flow[0])[j:j + 2]
+                k = np.zeros(2) if self.flow[1] is None else frame(self.flow[1])[j:j + 2]
+                factor = a * np.sqrt(1.0 + (k * np.exp(self.problem.log_viscosity(P_f[j:j + 2]))) ** 2)
             g = meniscus_balance(P_f, H_f, self.problem, s, j, h, float(layer[j - 1]), X_flow[j] - 0.5 * h - X_before,
-                                 dT)
+                                 dT, factor)
             theta = frame(self.theta)
             theta[:j] = np.clip(layer[:j] / np.maximum(H_f[:j], 1e-300), 0.0, 1.0)  # the held layer, as it is
             tried[j] = (result, frame(theta), g)

@@ -28,7 +28,7 @@ surfaces' flash temperatures after every step, with ``film_temperature_rise`` [K
 ``film_thermal``, where the energy equation ran) in place of the formula's ``thermal_factor`` (needs the
 lubricant's density, specific heat, conductivity and temperature–viscosity coefficient and both materials'
 thermal data). A starved contact (``CamFollower.oil_layer``, the layer the surfaces bring) is solved by the
-isothermal transient march only: ``squeeze`` with ``Multigrid(cavitation="mass_conserving")``
+transient march only (isothermal, or thermal / Eyring): ``squeeze`` with ``Multigrid(cavitation="mass_conserving")``
 (:func:`check_starved` refuses anything else); its films come with ``x_min``, where the film is thinnest.
 """
 
@@ -137,7 +137,8 @@ def cycle_film_steps(film_model: Any, effects: frozenset) -> list[Step]:
     (``squeeze``), :func:`camcontact.steps.film_cycle.thermal_transient_films`."""
     films = films_of(film_model)
     if "squeeze" in effects and solves_rheology(film_model):
-        reads = {"extra": ("effusivity",)} if film_model.thermal else {"optional": ("effusivity",)}
+        reads = ({"extra": ("effusivity",), "optional": ("oil_layer",)} if film_model.thermal
+                 else {"optional": ("effusivity", "oil_layer")})
         return [Step.of(thermal_transient_films, **reads)]
     film = transient_films if "squeeze" in effects else quasi_steady_films
     # the transient march: a starved inflow (CamFollower.oil_layer) and where its film is thinnest
@@ -154,12 +155,11 @@ def check_starved(scene: CamFollower, film_model: Any, effects: frozenset) -> No
     """InputError unless a starved cam contact (``oil_layer``) is solved by the mass-conserving transient march."""
     model = resolve_film_model(film_model, effects=effects, enable=())
     conserving = getattr(model, "name", "") == "multigrid" and getattr(model, "cavitation", "") == "mass_conserving"
-    rheology = "squeeze" in effects and ({"thermal", "non_newtonian"} & effects)
-    if not ("squeeze" in effects and conserving) or rheology:
+    if not ("squeeze" in effects and conserving):
         raise InputError(
             f"CamFollower {scene.name!r}: oil_layer = {format_quantity(scene.oil_layer)} (a starved contact) is solved "
-            "by the isothermal transient march only: effects including 'squeeze' (without 'thermal' or "
-            "'non_newtonian') and models={'film': Multigrid(cavitation='mass_conserving')}; got "
+            "by the transient march only: effects including 'squeeze' and "
+            "models={'film': Multigrid(cavitation='mass_conserving')}; got "
             f"effects {sorted(effects)} and the film model {getattr(model, 'name', model)!r}"
             + (f" with cavitation {model.cavitation!r}" if getattr(model, "name", "") == "multigrid" else ""))
 

@@ -248,7 +248,8 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     non-Newtonian film (the ``squeeze`` effect with ``thermal`` or ``non_newtonian`` and the ``multigrid`` film;
     :func:`camcontact.ehl.line_thermal.thermal_transient_cycle`: the energy equation across the film with the
     surfaces' flash-temperature conduction after each step, its flow factors in the next one). The surface speeds
-    u_cam, u_follower [m/s] (times ``film_speed_factor``) heat the film; ``effusivity`` (a pair
+    u_cam, u_follower [m/s] (times ``film_speed_factor``) heat the film; the film model's ``cavitation`` and the
+    optional ``oil_layer`` [m] (a starved inflow) as in :func:`transient_films`; ``effusivity`` (a pair
     [W s^0.5/(m^2 K)]) and the lubricant's thermal data are needed with ``thermal``.
 
     ``film_temperature_rise`` [K]: the largest mean film temperature rise over the contact at each angle; NaN
@@ -276,7 +277,8 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     result = thermal_transient_cycle(
         times, np.asarray(w)[order], np.asarray(R)[order], u1[order], u2[order], contact=contact,
         levels=film_model.levels, thermal=film_model.thermal, non_newtonian=film_model.non_newtonian,
-        tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict)
+        tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict,
+        cavitation=getattr(film_model, "cavitation", "reynolds"), oil_layer=inputs.get("oil_layer"))
     films = result.films
     energy = np.asarray(result.thermal, dtype=bool)  # the energy equation ran after the instant's film
     heated = np.concatenate([[False], energy[:-1]])  # the instant's film took the last instant's flow factors
