@@ -215,8 +215,9 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
     """Films [m] over the turn from one transient march with the squeeze term (the ``squeeze`` effect):
     implicit BDF2 steps from angle to angle through any entrainment reversal, from the steady film at
     the steadiest angle; needs contact and a constant cam speed at every angle. Optional ``oil_layer`` [m]: a
-    starved inflow (the film model's cavitation ``"mass_conserving"``; :class:`~camcontact.ehl.line_transient.
-    TransientLineSolver`), whose march starts from the steady starved film."""
+    starved inflow (the film model's cavitation ``"mass_conserving"``;
+    :class:`~camcontact.ehl.line_transient.TransientLineSolver`), whose march starts from the steady starved film;
+    ``x_min`` [m]: where the film is thinnest, from the contact centre, positive in the direction of u_m > 0."""
     from ..ehl.line_transient import transient_cycle
 
     u = np.asarray(u_m, dtype=float) * film_speed_factor
