@@ -230,6 +230,11 @@ class LineEHLProblem:
         the gap is closed (H <= 0)."""
         return self.density_ratio(P) * np.maximum(H, 0.0) ** 3 * np.exp(-self.log_viscosity(P)) / self.lam
 
+    def poiseuille_factor(self, P, a, k):
+        """F = a sqrt(1 + (k eta-bar(P))^2) [-]: the flow factor on the Poiseuille coefficient of a film with the
+        per-node factors a and Eyring coefficients k (:func:`camcontact.ehl._kernels.flow_factor`, vectorised)."""
+        return a * np.sqrt(1.0 + (k * np.exp(self.log_viscosity(P))) ** 2)
+
     def ddensity_ratio(self, P):
         """d rho-bar / dP [-] (0 if incompressible)."""
         P = np.maximum(np.asarray(P, dtype=float), 0.0)

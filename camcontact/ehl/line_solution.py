@@ -85,8 +85,7 @@ class LineEHLSolution:
         Newtonian; :func:`camcontact.ehl._kernels.flow_factor`)."""
         if self.flow_factor is None:
             return np.ones_like(self.P)
-        a, k = self.flow_factor[:, 0], self.flow_factor[:, 1]
-        return a * np.sqrt(1.0 + (k * np.exp(self.problem.log_viscosity(self.P))) ** 2)
+        return self.problem.poiseuille_factor(self.P, self.flow_factor[:, 0], self.flow_factor[:, 1])
 
     @property
     def film_fraction(self) -> np.ndarray:

@@ -644,7 +644,7 @@ class TransientLineSolver:
             if self.flow is not None:  # the film's flow factors (thermal / Eyring march), a sqrt(1 + (k eta-bar)^2)
                 a = frame(self.flow[0])[j:j + 2]
                 k = np.zeros(2) if self.flow[1] is None else frame(self.flow[1])[j:j + 2]
-                factor = a * np.sqrt(1.0 + (k * np.exp(self.problem.log_viscosity(P_f[j:j + 2]))) ** 2)
+                factor = self.problem.poiseuille_factor(P_f[j:j + 2], a, k)
             g = meniscus_balance(P_f, H_f, self.problem, s, j, h, float(layer[j - 1]), X_flow[j] - 0.5 * h - X_before,
                                  dT, factor)
             theta = frame(self.theta)

@@ -151,9 +151,9 @@ def cycle_film_steps(film_model: Any, effects: frozenset) -> list[Step]:
             Step.of(cycle_inlet_thermal), Step.of(thermal_films, extra=tuple(isothermal.values()), provides=films)]
 
 
-def check_starved(scene: CamFollower, film_model: Any, effects: frozenset) -> None:
-    """InputError unless a starved cam contact (``oil_layer``) is solved by the mass-conserving transient march."""
-    model = resolve_film_model(film_model, effects=effects, enable=())
+def check_starved(scene: CamFollower, model: Any, effects: frozenset) -> None:
+    """InputError unless a starved cam contact (``oil_layer``) is solved by the mass-conserving transient march
+    (``model``: the scene's resolved film model)."""
     conserving = getattr(model, "name", "") == "multigrid" and getattr(model, "cavitation", "") == "mass_conserving"
     if not ("squeeze" in effects and conserving):
         raise InputError(
@@ -170,8 +170,6 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
     effects = checked_request("cam_follower", models, effects, slots=sorted(DEFAULT_MODELS),
                               supported=SUPPORTED_EFFECTS, default=DEFAULT_EFFECTS)
     chosen, models = models, {**DEFAULT_MODELS, **models}
-    if scene.oil_layer is not None:
-        check_starved(scene, models["film"], effects)
     traction = fluid_traction_model(scene.lubricant, effects, models["traction"])
     # the transient march solves the thermal / non-Newtonian film itself with the multigrid model (a quasi-steady
     # turn corrects its films by the inlet shear-heating formula)
@@ -179,6 +177,8 @@ def build_cam_follower(scene: CamFollower, *, models: Mapping[str, Any], effects
         resolve_film_model(models["film"], effects=effects,
                            enable=("thermal", "non_newtonian") if "squeeze" in effects else ()), traction)
         if scene.lubricant is not None else None)
+    if scene.oil_layer is not None and film_model is not None:
+        check_starved(scene, film_model, effects)
     friction = SlotModel("friction_models", models["friction"], "friction", scene.friction_coefficient,
                          "coulomb_coefficient")
     wear = SlotModel("wear_models", models["wear"], "wear", scene.wear_coefficient, "archard_coefficient")
