@@ -457,8 +457,10 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     ``K_dense[k]`` the dense K/pi of a coarsest level. ``real_settings`` = (omega_gs,
     omega_jacobi, switch, h0_relaxation); ``int_settings`` = (pre_sweeps, post_sweeps,
     coarsest_sweeps, window, correct_pressurised_only, freeze_free_boundary,
-    dry_keeps_own_equation, first_top): the cycle's top level relaxes its nodes from ``first_top`` on (1: all;
-    the nodes before it are held as they are, a truncated inlet). Returns the work done in finest-grid relaxation
+    dry_keeps_own_equation, first_top, film_fas): the cycle's top level relaxes its nodes from ``first_top`` on (1:
+    all; the nodes before it are held as they are, a truncated inlet); with ``film_fas`` each coarse level's film
+    carries the FAS term of the film equation, so that the injected state's coarse film is the fine film
+    (:attr:`camcontact.ehl.line_multigrid.MultigridSettings.film_fas`). Returns the work done in finest-grid relaxation
     units.
 
     ``phi_all`` holds the flow factors' (a, k) per node and level (shape (total, 2); (1, 0) for the isothermal
@@ -484,6 +486,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     freeze_boundary = int_settings[5] != 0
     dry_own = int_settings[6] != 0
     first_top = int_settings[7]
+    film_fas = int_settings[8] != 0
     n_finest = n_of[n_of.shape[0] - 1]
     top = schedule[0, 1]
     # the nodes each level holds at P = 0: the frozen set, and (mass-conserving) on the coarse levels every node
@@ -491,6 +494,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     pin_all = dry_all.copy()
     spikes_all = np.zeros(P_all.shape[0], dtype=np.bool_)  # the spike zones found before each restriction
     zero_K = np.zeros(K_local.shape[1])
+    shape = parabola.copy()  # per level H - H0 - deformation: the parabola plus the film FAS term (coarse levels)
     work = 0.0
     for step in range(schedule.shape[0]):
         op = schedule[step, 0]
@@ -529,7 +533,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
         H_before = np.empty(0)  # the film the last sweep started from, and its pressures
         P_before = np.empty(0)
         for sweep in range(sweeps):
-            H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+            H = level_film(k, P, H0s[k], n_of, h_of, shape, offsets, mlmi_on, m_of, c1s, c2s, weights,
                            direct_below, elastic)
             if op == UP and sweep == sweeps - 1 and spike_drop > 0.0 and marked.any():
                 H_before = H.copy()
@@ -550,7 +554,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
                     if elastic:
                         deformation_change(H, P - P_before, K_table, zones)
                 else:
-                    H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                    H = level_film(k, P, H0s[k], n_of, h_of, shape, offsets, mlmi_on, m_of, c1s, c2s, weights,
                                    direct_below, elastic)
                 P_spikes = P.copy()
                 work += relax_spikes(P, H, H0s[k], f, theta, phi, dry, h, lam, viscosity_code, density_code, params,
@@ -561,7 +565,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
                         deformation_change(film_now, P - P_spikes, K_table, np.ones(n, dtype=np.bool_))
         if op == SOLVE:
             P_new, H0_new, iterations, status = coarse_newton(
-                P, H0s[k], f, loads[k], parabola[o:o + n], K_dense[k, :n, :n], theta, phi, dry, h, lam, viscosity_code,
+                P, H0s[k], f, loads[k], shape[o:o + n], K_dense[k, :n, :n], theta, phi, dry, h, lam, viscosity_code,
                 density_code, params, elastic, s, c_t, 1e-11, 60)
             work += iterations * n / n_finest
             if status == 0:
@@ -570,7 +574,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
                 H0s[k] = H0_new
             else:  # relaxation sweeps with H0 updates instead
                 for _ in range(coarsest_sweeps):
-                    H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                    H = level_film(k, P, H0s[k], n_of, h_of, shape, offsets, mlmi_on, m_of, c1s, c2s, weights,
                                    direct_below, elastic)
                     relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, params, K, omega_gs,
                                  omega_jacobi, switch, window, 1, n - 2, dry, s, c_t, update_theta, supply)
@@ -580,7 +584,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
             if film_now.shape[0] == n:
                 H = film_now
             else:
-                H = level_film(k, P, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+                H = level_film(k, P, H0s[k], n_of, h_of, shape, offsets, mlmi_on, m_of, c1s, c2s, weights,
                                direct_below, elastic)
             r = np.empty(n)
             reynolds_residual(P, H, theta, phi, h, lam, viscosity_code, density_code, params, s, c_t, r)
@@ -602,8 +606,14 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
                     pin_all[oc + j] = dry_all[oc + j] or not P[2 * j] > 0.0
             theta_c = theta_all[oc:oc + nc]
             phi_c = phi_all[oc:oc + nc]
-            Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
+            for j in range(nc):
+                shape[oc + j] = parabola[oc + j]
+            Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, shape, offsets, mlmi_on, m_of, c1s, c2s, weights,
                             direct_below, elastic)
+            if film_fas:
+                for j in range(nc):  # the film equation's FAS term: the coarse film of the injected state = the fine one
+                    shape[oc + j] += H[2 * j] - Hc[j]
+                    Hc[j] = H[2 * j]
             fc = f_all[oc:oc + nc]
             reynolds_residual(Pc, Hc, theta_c, phi_c, h_of[k - 1], lam, viscosity_code, density_code, params, s, c_t,
                               fc)

@@ -37,8 +37,9 @@ the discrete problem of :mod:`camcontact.ehl.line_operator`:
   cannot represent and amplify: measured at M 10, L 20 on level 9, one cycle started from the dense Newton
   solution moved the spike by 8e-3 and the cycles diverged; with the local solve they converge by x0.35 per
   cycle to the dense solution's H_min (to 1e-6). Over the Moes map of ``benchmarks/stability_map.py``
-  (level 9) 106 of 108 cases converge, 104 in the first attempt (before: 100, with warnings at M 5-10,
+  (level 9) 106 of 108 cases converged, 104 in the first attempt (before: 100, with warnings at M 5-10,
   L 20-30 and errors at M 5-10, L 30), and the LS-1 cam's transient march at level 8 no longer diverges;
+  with the film equation's FAS term in the fallback attempts (:attr:`MultigridSettings.film_fas`) all 108 do;
 * **safeguards** — if the cycles start alternating between two states while the free
   boundary moves (it hops between nodes), the cavitated set is frozen and the complementarity
   checked afterwards; if an attempt diverges or stagnates, further ones run with
@@ -145,6 +146,18 @@ class MultigridSettings:
     #: ``pre_sweeps`` and ``post_sweeps`` from the cycle after one that changed the watched films by more than
     #: :data:`STALL` times the change of the cycle before. False: (``pre_sweeps``, ``post_sweeps``) throughout
     lean: bool = True
+    #: FAS for the film equation too: each coarse level's film is H0 + X^2/2 - K P/pi plus the FAS term
+    #: H_fine(injected) - (H0 + X^2/2 - K_c P_c/pi) taken at the restriction, so the coarse film of the injected state
+    #: is the fine film, not the coarse grid's own discretisation of the elastic integral. That one misses a thin film
+    #: by more than the film (measured, M 1000, L 0 on level 9: H_min 2e-4, the film of the injected pressures on the
+    #: 225-node grid -4e-4, 21 nodes closed), and corrections solved for a closed coarse film ran away (M 3000, L 0
+    #: diverged in every attempt). The fallback attempts (:data:`ROBUST`) use it. Measured over the Moes map of
+    #: ``benchmarks/stability_map.py`` (level 9) with it in every attempt: 108 of 108 converge instead of 106, M 3000
+    #: with L 1-25 in the first attempt, M 1000 in 91-176 instead of 209-232 work units, the other films within 6e-7.
+    #: It is not the first attempt's default because a warm start then stops further from the converged film (M 21,
+    #: L 10 from M 20 on level 7: 4.1e-7 instead of 5e-8 at tolerance 1e-7) and the transient march's steps stop
+    #: with their mass balance 1.3e-3 instead of 5e-4 of the inflow off (tolerance 1e-9)
+    film_fas: bool = False
 
 
 class _Level:
@@ -262,10 +275,11 @@ class LineHierarchy:
         self.phi_all[:, 0] = 1.0
         self.H0s, self.loads = np.zeros(len(levels)), np.zeros(len(levels))
         self.real_settings = np.array([s.omega_gs, s.omega_jacobi, s.switch, s.h0_relaxation, s.spike_drop])
-        #: the last entry: the first node the top level relaxes (1: all; a starved transient step holds the nodes
+        #: entry 7: the first node the top level relaxes (1: all; a starved transient step holds the nodes
         #: upstream of its meniscus, :meth:`camcontact.ehl.line_transient.TransientLineSolver._starved_step`)
         self.int_settings = np.array([s.pre_sweeps, s.post_sweeps, s.coarsest_sweeps, s.window,
-                                      s.correct_pressurised_only, s.freeze_free_boundary, s.dry_keeps_own_equation, 1],
+                                      s.correct_pressurised_only, s.freeze_free_boundary, s.dry_keeps_own_equation, 1,
+                                      s.film_fas],
                                      dtype=np.int64)
 
     # ------------------------------------------------------------------ operator pieces
@@ -372,10 +386,12 @@ class LineHierarchy:
 #: the further attempts after a divergence or stagnation: F(2,1)-cycles throughout instead of lean ones (the
 #: full-multigrid start of the heaviest loads, M = 3000, needs two pre-sweeps: measured on level 9, one diverged at
 #: L = 2-20, two converged in 0.9-2.0 s), then the conservative settings, smaller relaxation factors and Gauss–Seidel only where the equation is clearly
-#: differential, first with F-cycles, then with W-cycles (twice the work per cycle, the most robust)
-ROBUST = ({"lean": False},
-          {"cycle": "F", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0},
-          {"cycle": "W", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0})
+#: differential, first with F-cycles, then with W-cycles (twice the work per cycle, the most robust); every fallback
+#: with the film equation's FAS term (:attr:`MultigridSettings.film_fas`: M 3000, L 0 converges in the second attempt
+#: instead of running away in all four, M 3000, L 30 in the third to the dense Newton film instead of circling)
+ROBUST = ({"lean": False, "film_fas": True},
+          {"cycle": "F", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0, "film_fas": True},
+          {"cycle": "W", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0, "film_fas": True})
 
 
 def solve_multigrid(

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from camcontact.errors import ConvergenceError
-from camcontact.ehl.line_multigrid import solve_multigrid
+from camcontact.ehl.line_multigrid import MultigridSettings, solve_multigrid
 from camcontact.ehl.line_problem import LineEHLProblem
 
 CASES = {
@@ -142,10 +142,16 @@ def test_cycles_keep_a_converged_spike_only_with_the_spike_solve():
     assert moved[0.0] > 1e-2
 
 
-def test_runaway_state_raises_instead_of_being_kept():
-    """M = 3000, L = 0 (isoviscous, film ~4e-5 Hertz units) on level 8: every attempt runs off (residuals of
-    1e10-1e158, H0 ~ 1e38, finite). Before the runaway rule the last attempt's finite absurd state was kept as the
-    one with the smallest residual (H_min 1e36 with a warning); now the solve fails loudly with its record."""
+def test_runaway_state_raises_instead_of_being_kept(monkeypatch):
+    """M = 3000, L = 0 (isoviscous, film ~4e-5 Hertz units) on level 8 with the classical FAS in every attempt (the
+    coarse grids' own films; the ladder's fallbacks without ``film_fas``): every attempt runs off (residuals of
+    1e10-1e187, H0 ~ 1e46, finite). Before the runaway rule the last attempt's finite absurd state was kept as the
+    one with the smallest residual (H_min 1e36 with a warning); now the solve fails loudly with its record. (The
+    default ladder's fallbacks, with the film FAS, converge it.)"""
+    from camcontact.ehl import line_multigrid
+
+    monkeypatch.setattr(line_multigrid, "ROBUST", tuple({k: v for k, v in rung.items() if k != "film_fas"}
+                                                         for rung in line_multigrid.ROBUST))
     problem = LineEHLProblem(M=3000, L=0, alpha=2.2e-8, z=0.68, pressure_scale=1e9)
     with pytest.raises(ConvergenceError, match="runaway state") as caught:
         solve_multigrid(problem, 8)
@@ -170,3 +176,36 @@ def test_a_closed_discrete_film_is_said():
     solution = solve_multigrid(problem, 6)
     assert solution.H_min < 0
     assert "the discrete film closes" in solution.record.message and "more levels" in solution.record.message
+
+
+def test_heaviest_isoviscous_corner_converges_with_the_film_fas():
+    """M = 3000, L = 0 on level 9 (film ~4e-5 Hertz units): the coarse grids' own films close over the contact (the
+    225-node grid's by -4e-4 at M = 1000) and, with the classical FAS, every attempt ran away. With the film
+    equation's FAS term (``MultigridSettings.film_fas``) the coarse films of the injected state are the fine films:
+    alone it converges in one attempt, and the default ladder's first fallback converges it, with a positive film."""
+    problem = LineEHLProblem(M=3000, L=0, alpha=2.2e-8, z=0.68, pressure_scale=1e9)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        solution = solve_multigrid(problem, 9)
+    assert solution.record.converged and solution.H_min > 0.0
+    assert "converged with settings lean=False, film_fas=True" in solution.record.message
+    alone = solve_multigrid(problem, 9, settings=MultigridSettings(film_fas=True))
+    assert alone.record.converged and alone.record.message == ""
+    assert alone.H_min == pytest.approx(solution.H_min, abs=1e-7)
+
+
+def test_heaviest_piezoviscous_corner_converges_to_the_dense_solution():
+    """M = 3000, L = 30 on level 9: the Petrusevich spike is one node wide (ln eta falls by 33 between two nodes)
+    and the first two attempts circle around the discrete solution (H_min between 3.8e-4 and 4.4e-4, period 2);
+    the conservative attempt converges. Its film equals the dense Newton solution of the same grid (measured 2e-7
+    apart; level 8 gives 3.7e-4, level 10 5.3e-4: the grid, not the solver, sets the rest)."""
+    from camcontact.ehl.line_reference import solve_reference
+
+    problem = LineEHLProblem(M=3000, L=30, alpha=2.2e-8, z=0.68)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        solution = solve_multigrid(problem, 9)
+    assert solution.record.converged
+    dense = solve_reference(problem, 9, deformation="direct", tolerance=1e-10, strict=True, initial=solution)
+    assert abs(solution.H_min - dense.H_min) < 1e-6
+    assert abs(solution.H0 - dense.H0) < 1e-6
