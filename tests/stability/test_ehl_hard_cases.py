@@ -182,7 +182,8 @@ def test_heaviest_isoviscous_corner_converges_with_the_film_fas():
     """M = 3000, L = 0 on level 9 (film ~4e-5 Hertz units): the coarse grids' own films close over the contact (the
     225-node grid's by -4e-4 at M = 1000) and, with the classical FAS, every attempt ran away. With the film
     equation's FAS term (``MultigridSettings.film_fas``) the coarse films of the injected state are the fine films:
-    alone it converges in one attempt, and the default ladder's first fallback converges it, with a positive film."""
+    the default ladder's first fallback converges it, with a positive film, and so does a ladder that starts with
+    it, to the same film."""
     problem = LineEHLProblem(M=3000, L=0, alpha=2.2e-8, z=0.68, pressure_scale=1e9)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
@@ -190,7 +191,7 @@ def test_heaviest_isoviscous_corner_converges_with_the_film_fas():
     assert solution.record.converged and solution.H_min > 0.0
     assert "converged with settings lean=False, film_fas=True" in solution.record.message
     alone = solve_multigrid(problem, 9, settings=MultigridSettings(film_fas=True))
-    assert alone.record.converged and alone.record.message == ""
+    assert alone.record.converged and "failed" not in alone.record.message
     assert alone.H_min == pytest.approx(solution.H_min, abs=1e-7)
 
 
@@ -224,3 +225,18 @@ def test_the_attempts_of_one_solve_share_their_start_solution(monkeypatch):
     assert len(calls) == 1
     solve_multigrid(LineEHLProblem(M=20, L=10, alpha=1.7e-8, z=0.68), 6)  # a new solve: its own start
     assert len(calls) == 2
+
+
+def test_isoviscous_exit_converges_to_the_dense_solution():
+    """M = 1000, L = 0 on level 9: no spike can form, and point relaxation stalled at the last pressurised node
+    before the exit (its residual 5e-3): every attempt stopped with H_min 2.02-2.04e-4, 2-3 % above the dense Newton
+    solution of the same grid, and called it converged. The exit zone is now solved together like a spike
+    (``find_spikes``): the film equals the dense solution's (measured 1e-8 apart)."""
+    from camcontact.ehl.line_reference import solve_reference
+
+    problem = LineEHLProblem(M=1000, L=0, alpha=2.2e-8, z=0.68, pressure_scale=1e9)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        solution = solve_multigrid(problem, 9)
+    dense = solve_reference(problem, 9, deformation="direct", tolerance=1e-10, strict=True, initial=solution)
+    assert abs(solution.H_min - dense.H_min) < 2e-7  # 1 % of the film would be 2e-6
