@@ -664,8 +664,8 @@ STALL = 0.3
 
 #: a finest-grid residual above this is a runaway state, however finite: an attempt that reaches it has diverged
 #: (measured over the Moes map of ``benchmarks/stability_map.py``: converging cases start below 1e-2; M = 3000,
-#: L = 0 on level 9, whose discrete film closes, ran off to residuals of 1e39-1e169 with H0 ~ 1e36 and, finite,
-#: was kept as the attempt with the smallest residual)
+#: L = 0 on level 9 without the film FAS (:attr:`MultigridSettings.film_fas`) ran off to residuals of 1e39-1e169
+#: with H0 ~ 1e36 and, finite, was kept as the attempt with the smallest residual)
 RUNAWAY_RESIDUAL = 1e6
 
 #: a full-multigrid start whose pressures exceed this (Hertz units; the Petrusevich spike of the hardest cases of the
