@@ -8,7 +8,7 @@ not use it there, only the density law. Per case: the status (``converged``, ``w
 attempt, ``error``: every attempt diverged or failed), the attempts the solver's ladder ran, the work units (finest-
 grid relaxation sweeps), the wall time, H_min and H0, and the record's message.
 
-    python benchmarks/stability_map.py            # level 9, the whole map (about 20 s)
+    python benchmarks/stability_map.py            # level 9, the whole map (about 25 s)
     python benchmarks/stability_map.py --quick    # level 6, a 4 x 3 corner of the map (the tests run this)
 
 Prints the status, attempts, work units and time as M x L tables and writes ``stability_map.csv`` into ``--out``.

@@ -39,7 +39,7 @@ the discrete problem of :mod:`camcontact.ehl.line_operator`:
   cycle to the dense solution's H_min (to 1e-6). Over the Moes map of ``benchmarks/stability_map.py``
   (level 9) 106 of 108 cases converged, 104 in the first attempt (before: 100, with warnings at M 5-10,
   L 20-30 and errors at M 5-10, L 30), and the LS-1 cam's transient march at level 8 no longer diverges;
-  with the film equation's FAS term in the fallback attempts (:attr:`MultigridSettings.film_fas`) all 108 do;
+  with the film equation's FAS term in the last fallback attempt (:attr:`MultigridSettings.film_fas`) all 108 do;
 * **safeguards** — if the cycles start alternating between two states while the free
   boundary moves (it hops between nodes), the cavitated set is frozen and the complementarity
   checked afterwards; if an attempt diverges or stagnates, further ones run with
@@ -151,12 +151,13 @@ class MultigridSettings:
     #: is the fine film, not the coarse grid's own discretisation of the elastic integral. That one misses a thin film
     #: by more than the film (measured, M 1000, L 0 on level 9: H_min 2e-4, the film of the injected pressures on the
     #: 225-node grid -4e-4, 21 nodes closed), and corrections solved for a closed coarse film ran away (M 3000, L 0
-    #: diverged in every attempt). The fallback attempts (:data:`ROBUST`) use it. Measured over the Moes map of
-    #: ``benchmarks/stability_map.py`` (level 9) with it in every attempt: 108 of 108 converge instead of 106, M 3000
-    #: with L 1-25 in the first attempt, M 1000 in 91-176 instead of 209-232 work units, the other films within 6e-7.
-    #: It is not the first attempt's default because a warm start then stops further from the converged film (M 21,
-    #: L 10 from M 20 on level 7: 4.1e-7 instead of 5e-8 at tolerance 1e-7) and the transient march's steps stop
-    #: with their mass balance 1.3e-3 instead of 5e-4 of the inflow off (tolerance 1e-9)
+    #: diverged in every attempt). The ladder's last attempt (:data:`ROBUST`) uses it: over the Moes map of
+    #: ``benchmarks/stability_map.py`` (level 9) 108 of 108 then converge instead of 106 (M 3000 at L 0 and L 30 in
+    #: that attempt). With it in every attempt the map converged as well, M 3000 with L 1-25 in the first attempt and
+    #: M 1000 in 91-176 instead of 209-232 work units, the other films within 6e-7; but a warm start then stops
+    #: further from the converged film (M 21, L 10 from M 20 on level 7: 4.1e-7 instead of 5e-8 at tolerance 1e-7),
+    #: the transient march's steps stop with their mass balance 1.3e-3 instead of 5e-4 of the inflow off (tolerance
+    #: 1e-9), and the meniscus search of a starved solve runs more failing attempts (see :data:`ROBUST`)
     film_fas: bool = False
 
 
@@ -386,12 +387,16 @@ class LineHierarchy:
 #: the further attempts after a divergence or stagnation: F(2,1)-cycles throughout instead of lean ones (the
 #: full-multigrid start of the heaviest loads, M = 3000, needs two pre-sweeps: measured on level 9, one diverged at
 #: L = 2-20, two converged in 0.9-2.0 s), then the conservative settings, smaller relaxation factors and Gauss–Seidel only where the equation is clearly
-#: differential, first with F-cycles, then with W-cycles (twice the work per cycle, the most robust); every fallback
-#: with the film equation's FAS term (:attr:`MultigridSettings.film_fas`: M 3000, L 0 converges in the second attempt
-#: instead of running away in all four, M 3000, L 30 in the third to the dense Newton film instead of circling)
-ROBUST = ({"lean": False, "film_fas": True},
-          {"cycle": "F", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0, "film_fas": True},
-          {"cycle": "W", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0, "film_fas": True})
+#: differential, first with F-cycles, then with W-cycles (twice the work per cycle, the most robust); last, the
+#: conservative F-cycles with the film equation's FAS term (:attr:`MultigridSettings.film_fas`): M 3000, L 0 on level 9
+#: converges there instead of running away in every attempt, M 3000, L 30 to the dense Newton film instead of circling.
+#: (With the film FAS in every fallback the Moes map converged as well, but a starved solve's meniscus search, whose
+#: trial meniscus positions fail by design, ran more failing attempts: the LS-1 flat follower's march at a 0.1 um layer,
+#: level 8, took 24.8 s instead of 15.9 s for the same films)
+ROBUST = ({"lean": False},
+          {"cycle": "F", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0},
+          {"cycle": "W", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0},
+          {"cycle": "F", "lean": False, "omega_gs": 0.5, "omega_jacobi": 0.2, "switch": 8.0, "film_fas": True})
 
 
 def solve_multigrid(
