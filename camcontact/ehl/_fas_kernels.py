@@ -362,10 +362,10 @@ def find_spikes(P, viscosity_code, params, drop, marked):
             for m in range(i - 2, i + 4):
                 marked[m] = True
             found = True
-    top = 0.0
+    largest = 0.0
     for i in range(n):
-        top = max(top, P[i])
-    if not top > floor:  # no spike can form: the exit's cavitation boundary instead (docstring)
+        largest = max(largest, P[i])
+    if not largest > floor:  # no spike can form: the exit's cavitation boundary instead (docstring)
         for i in range(n - 6, 4, -1):
             if P[i] > 0.0 and P[i + 1] <= 0.0 and P[i - 1] > 0.0:
                 for m in range(i - 3, i + 2):
@@ -477,8 +477,8 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     dry_keeps_own_equation, first_top, film_fas): the cycle's top level relaxes its nodes from ``first_top`` on (1:
     all; the nodes before it are held as they are, a truncated inlet); with ``film_fas`` each coarse level's film
     carries the FAS term of the film equation, so that the injected state's coarse film is the fine film
-    (:attr:`camcontact.ehl.line_multigrid.MultigridSettings.film_fas`). Returns the work done in finest-grid relaxation
-    units.
+    (:attr:`camcontact.ehl.line_multigrid.MultigridSettings.film_fas`). Returns the work done in finest-grid
+    relaxation units.
 
     ``phi_all`` holds the flow factors' (a, k) per node and level (shape (total, 2); (1, 0) for the isothermal
     Newtonian film; see :mod:`camcontact.ehl._kernels`), given on every level (the hierarchy restricts the finest
@@ -628,7 +628,7 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
             Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, shape, offsets, mlmi_on, m_of, c1s, c2s, weights,
                             direct_below, elastic)
             if film_fas:
-                for j in range(nc):  # the film equation's FAS term: the coarse film of the injected state = the fine one
+                for j in range(nc):  # the film equation's FAS term: the injected state's coarse film is the fine one
                     shape[oc + j] += H[2 * j] - Hc[j]
                     Hc[j] = H[2 * j]
             fc = f_all[oc:oc + nc]
