@@ -511,7 +511,8 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
     pin_all = dry_all.copy()
     spikes_all = np.zeros(P_all.shape[0], dtype=np.bool_)  # the spike zones found before each restriction
     zero_K = np.zeros(K_local.shape[1])
-    shape = parabola.copy()  # per level H - H0 - deformation: the parabola plus the film FAS term (coarse levels)
+    # per level H - H0 - deformation: the parabola, plus the film FAS term on the coarse levels (else never written)
+    shape = parabola.copy() if film_fas else parabola
     work = 0.0
     for step in range(schedule.shape[0]):
         op = schedule[step, 0]
@@ -623,13 +624,11 @@ def fas_cycle(schedule, P_all, P_old, f_all, H0s, loads, dry_all, theta_all, phi
                     pin_all[oc + j] = dry_all[oc + j] or not P[2 * j] > 0.0
             theta_c = theta_all[oc:oc + nc]
             phi_c = phi_all[oc:oc + nc]
-            for j in range(nc):
-                shape[oc + j] = parabola[oc + j]
-            Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, shape, offsets, mlmi_on, m_of, c1s, c2s, weights,
+            Hc = level_film(k - 1, Pc, H0s[k], n_of, h_of, parabola, offsets, mlmi_on, m_of, c1s, c2s, weights,
                             direct_below, elastic)
             if film_fas:
                 for j in range(nc):  # the film equation's FAS term: the injected state's coarse film is the fine one
-                    shape[oc + j] += H[2 * j] - Hc[j]
+                    shape[oc + j] = parabola[oc + j] + (H[2 * j] - Hc[j])
                     Hc[j] = H[2 * j]
             fc = f_all[oc:oc + nc]
             reynolds_residual(Pc, Hc, theta_c, phi_c, h_of[k - 1], lam, viscosity_code, density_code, params, s, c_t,

@@ -574,8 +574,8 @@ def _solve_once(problem, levels, tolerance, settings, initial, compiled, factors
     if isinstance(initial, WarmStart):  # ... unless it is a prediction: the first cycle's change counts from it
         reference = solver.watched(finest, P, solver.film(finest, P, H0), H0)
     if initial is None:  # full multigrid start: exact solve on the start level, then up level by level
-        first, coarse = _shared_start(starts, problem, min(settings.start_level, len(solver.levels)),
-                                      len(solver.levels))
+        first, coarse = _shared_start({} if starts is None else starts, problem,
+                                      min(settings.start_level, len(solver.levels)), len(solver.levels))
         P, H0 = coarse.P.copy(), coarse.H0
         solver.work += coarse.record.cycles * coarse.X.size / finest.n
         if settings.lean:  # F(1, post_sweeps) on the way up
@@ -703,13 +703,11 @@ MONITOR_RULES = MonitorRules(stagnation=STAGNATION, load_factor=10.0, load_floor
 WARM_RULES = attrs.evolve(MONITOR_RULES, estimate_remaining=True)
 
 
-def _shared_start(starts: dict | None, problem: LineEHLProblem, level: int, finest: int) -> tuple[int, LineEHLSolution]:
+def _shared_start(starts: dict, problem: LineEHLProblem, level: int, finest: int) -> tuple[int, LineEHLSolution]:
     """:func:`_start`, computed once per solve: its result (or its ConvergenceError) is kept in ``starts`` under
-    ``level`` for the solve's later attempts, which differ in their cycles, not in their start (None: not kept).
+    ``level`` for the solve's later attempts, which differ in their cycles, not in their start.
     Measured on level 9: the dense start of M 3000, L 15-30 (level 6, by continuation) takes 2.1 s, which each of
     the ladder's attempts repeated (M 3000, L 30, three attempts: 6.1 s in all)."""
-    if starts is None:
-        return _start(problem, level, finest)
     if level not in starts:
         try:
             starts[level] = _start(problem, level, finest)
