@@ -178,8 +178,8 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, phi, pinned, h, 
             r, d_r, log_eta, dlog_eta = law_state(P[j], viscosity_code, density_code, params)
             e = math.exp(-log_eta)
             gap = max(H[j], 0.0)
-            rho[j] = r * theta[j]
-            drho[j] = d_r * theta[j]
+            rho[j] = r * theta[j] * phi[j, 2]
+            drho[j] = d_r * theta[j] * phi[j, 2]
             factor, share = flow_factor(phi, j, log_eta)
             xi[j] = factor * r * gap * gap * gap * e / lam
             dxi_dH[j] = 3.0 * factor * r * gap * gap * e / lam
@@ -201,7 +201,7 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, phi, pinned, h, 
                 direct[i, q + 1] += weight * dxi_dP[i - 1 + q]
                 dL_dH[i, q + 1] += weight * dxi_dH[i - 1 + q]
             for k in range(3):
-                weight, mm = wedge_weight(i, k, n, s, P, rho)
+                weight, mm = wedge_weight(i, k, n, s, P, theta)
                 coefficient = abs(s) * weight / h
                 if k == 0:
                     coefficient += c_t

@@ -11,7 +11,7 @@ reference scaling of :mod:`camcontact.ehl.line_transient` for the transient one)
 .. math::
     L_i = \\frac{\\xi_{i-1/2}(P_{i-1} - P_i) + \\xi_{i+1/2}(P_{i+1} - P_i)}{h^2}
           - |s|\\,\\frac{1.5\\,q_i - 2\\,q_{i-\\sigma} + 0.5\\,q_{i-2\\sigma}}{h}
-          - c_t\\,q_i, \\qquad q = \\theta\\bar\\rho H,\\ \\sigma = \\operatorname{sign}(s)
+          - c_t\\,q_i, \\qquad q = c\\,\\theta\\bar\\rho H,\\ \\sigma = \\operatorname{sign}(s)
 
 a central Poiseuille term, the wedge scaled by the signed
 entrainment speed ratio s = u_m/u_ref and upwinded in the direction of the flow (second order,
@@ -28,9 +28,12 @@ clipping) operator; :func:`relax_hybrid` with ``update_theta`` solves for theta 
 boundary node upstream (X_a for s > 0, X_b for s < 0) holds the supply: its content is the inlet
 layer (starvation) or a full film.
 
-phi holds two numbers per node, phi[i] = (a_i, k_i), for the flow factor on the Poiseuille coefficient,
-xi = F rho H^3/(eta lambda) with F = a_i sqrt(1 + (k_i eta-bar(P))^2) (:func:`flow_factor`): (1, 0) for the
-isothermal Newtonian film. The thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`) puts in a
+phi holds three numbers per node, phi[i] = (a_i, k_i, c_i): the flow factor on the Poiseuille coefficient,
+xi = F rho H^3/(eta lambda) with F = a_i sqrt(1 + (k_i eta-bar(P))^2) (:func:`flow_factor`), and the Couette
+factor c_i on the content of the wedge and squeeze terms, q = c theta rho H (the entrainment flux of a film
+whose viscosity varies across it, u_e h = c u_m h: Yang & Wen's 1990 generalised Reynolds equation, its
+rho*/rho); (1, 0, 1) for the isothermal Newtonian film. Solvers with a squeeze term keep c = 1 (the squeeze
+content is the film's mean density times H, not the Couette one). The thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`) puts in a
 the film's viscosity at its temperature and in k the Eyring coefficient of the Reynolds–Eyring flow factor
 cosh(tau_m/tau0) = sqrt(1 + Lambda^2), Lambda = k eta-bar: its dependence on the pressure is kept in the
 kernels (with Lambda >> 1 the Poiseuille flow of a sheared Eyring film no longer depends on the viscosity; a
@@ -304,14 +307,13 @@ def density_ratio(P, density_code, params):
 
 
 @helper
-def full_film(j, P, rho):
-    """True where node j carries a full film: pressurised, or theta = 1 (``rho`` = theta times the density
-    ratio, which is 1 at P = 0)."""
-    return P[j] > 0.0 or rho[j] >= 1.0
+def full_film(j, P, theta):
+    """True where node j carries a full film: pressurised, or its film fraction theta = 1."""
+    return P[j] > 0.0 or theta[j] >= 1.0
 
 
 @helper
-def wedge_weight(i, k, n, s, P, rho):
+def wedge_weight(i, k, n, s, P, theta):
     """(weight, node) of term k = 0, 1, 2 of the upwind wedge stencil at node i for speed ratio s.
 
     The wedge is the difference G_i - G_(i-sigma) of the upwind fluxes G_j = q_j + phi_j (q_j - q_(j-sigma))/2,
@@ -326,7 +328,7 @@ def wedge_weight(i, k, n, s, P, rho):
     (1, -1) when the second upstream node is outside the grid; (0, i) for an unused term or s = 0. The
     limiter keeps the scheme conservative (:attr:`camcontact.ehl.line_solution.LineEHLSolution.mass_flux`).
     """
-    w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, rho)
+    w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, theta)
     if k == 0:
         return w0, i
     if k == 1:
@@ -335,7 +337,7 @@ def wedge_weight(i, k, n, s, P, rho):
 
 
 @helper
-def wedge_stencil(i, n, s, P, rho):
+def wedge_stencil(i, n, s, P, theta):
     """The three terms of :func:`wedge_weight` at node i at once: (w0, w1, w2, m1, m2), the weights of nodes i, m1
     and m2 (what the sweeps use: one evaluation per node instead of one per term and use; an unused term has
     weight 0 at node i)."""
@@ -345,13 +347,13 @@ def wedge_stencil(i, n, s, P, rho):
     if (i - 2 * sigma < 0) or (i - 2 * sigma > n - 1):
         return 1.0, -1.0, 0.0, i - sigma, i
     up = i - sigma
-    phi_i = 1.0 if full_film(up, P, rho) else 0.0
-    phi_up = 1.0 if full_film(up - sigma, P, rho) else 0.0
+    phi_i = 1.0 if full_film(up, P, theta) else 0.0
+    phi_up = 1.0 if full_film(up - sigma, P, theta) else 0.0
     return 1.0 + 0.5 * phi_i, -1.0 - 0.5 * (phi_i + phi_up), 0.5 * phi_up, up, up - sigma
 
 
 @helper
-def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
+def local_derivatives(i, P, H, rho, theta, xi, dlx, drh, h, K, s, c_t):
     """(dL_i/dP_i, dL_i/dP_{i-1}) of the discrete operator, local terms only.
 
     Includes the Poiseuille coefficients, their dependence on P (through rho and eta) and on
@@ -359,7 +361,7 @@ def local_derivatives(i, P, H, rho, xi, dlx, drh, h, K, s, c_t):
     rho(P) and on the films. ``dlx`` = d ln(xi)/dP at fixed H and ``drh`` = d rho/dP hold the
     nodal law derivatives.
     """
-    w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, rho)
+    w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, theta)
     return derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2)
 
 
@@ -427,7 +429,7 @@ def nodal_coefficients(P, H, theta, phi, lam, viscosity_code, density_code, para
     (eta lambda) (a full film's, F the node's flow factor, :func:`flow_factor`) at every node."""
     for i in range(P.shape[0]):
         r = density_ratio(P[i], density_code, params)
-        rho[i] = r * theta[i]
+        rho[i] = r * theta[i] * phi[i, 2]
         hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
         log_eta = log_viscosity(P[i], viscosity_code, params)
         xi[i] = flow_factor(phi, i, log_eta)[0] * r * hi * hi * hi * math.exp(-log_eta) / lam
@@ -464,23 +466,23 @@ def nodal_laws(P, H, theta, phi, lam, viscosity_code, density_code, params, rho,
         p = P[i]
         hi = max(H[i], 0.0)  # a closed gap (H <= 0) passes no pressure flow
         if p <= 0.0:
-            rho[i] = theta[i]
+            rho[i] = theta[i] * phi[i, 2]
             xi[i] = flow_factor(phi, i, 0.0)[0] * hi * hi * hi / lam
             dlx[i] = 0.0
             drh[i] = 0.0
             continue
         r, d_r, log_eta, dlog_eta = law_state(p, viscosity_code, density_code, params)
-        rho[i] = r * theta[i]
+        rho[i] = r * theta[i] * phi[i, 2]
         factor, share = flow_factor(phi, i, log_eta)
         xi[i] = factor * r * hi * hi * hi * math.exp(-log_eta) / lam
         dlx[i] = d_r / r - (1.0 - share) * dlog_eta
-        drh[i] = d_r * theta[i]
+        drh[i] = d_r * theta[i] * phi[i, 2]
 
 
 @helper
-def operator_at(i, P, H, rho, xi, h, s, c_t):
+def operator_at(i, P, H, rho, theta, xi, h, s, c_t):
     """L_i of the module docstring (central Poiseuille, signed upwind wedge, implicit squeeze)."""
-    w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, rho)
+    w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, theta)
     return operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2)
 
 
@@ -510,7 +512,7 @@ def reynolds_residual(P, H, theta, phi, h, lam, viscosity_code, density_code, pa
     out[0] = 0.0
     out[n - 1] = 0.0
     for i in range(1, n - 1):
-        out[i] = operator_at(i, P, H, rho, xi, h, s, c_t)
+        out[i] = operator_at(i, P, H, rho, theta, xi, h, s, c_t)
 
 
 @helper
@@ -520,7 +522,7 @@ def refresh_coefficients(m, i, change, new, P, H, theta, phi, lam, viscosity_cod
     updated): xi scaled by (H_new/H_old)^3 exp(d ln xi/dP dP) for a small change of a wet node, else from the laws
     (see :func:`relax_hybrid`)."""
     r_m = density_ratio(P[m], density_code, params)
-    rho[m] = r_m * theta[m]
+    rho[m] = r_m * theta[m] * phi[m, 2]
     hm = max(H[m], 0.0)
     before = H[m] + (1.0 / math.pi) * K[abs(m - i)] * change
     step = dlx[m] * change if m == i else 0.0
@@ -595,7 +597,7 @@ def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, para
     for i in range(1, n - 1):
         coefficient = 0.5 * (xi[i - 1] + 2.0 * xi[i] + xi[i + 1]) / (h * h)
         d_integral = c_t * rho[i] * K[0]
-        w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, rho)
+        w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, theta)
         if w0 != 0.0:
             d_integral += abs(s) * w0 * rho[i] * K[0] / h
         if w1 != 0.0:
@@ -610,20 +612,20 @@ def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, para
             continue
         if update_theta and P[i] <= 0.0:  # a cavitated node: its film fraction first
             rho[i] = 0.0  # its own content out of L_i (the weights do not depend on it, see wedge_weight)
-            weight, _ = wedge_weight(i, 0, n, s, P, rho)
-            own = abs(s) * weight / h + c_t
+            weight, _ = wedge_weight(i, 0, n, s, P, theta)
+            own = (abs(s) * weight / h + c_t) * phi[i, 2]
             if own > 0.0 and H[i] > 0.0:
-                rest = operator_at(i, P, H, rho, xi, h, s, c_t)  # L_i without its own content
+                rest = operator_at(i, P, H, rho, theta, xi, h, s, c_t)  # L_i without its own content
                 fraction = (rest - f[i]) / (own * H[i])
                 if fraction < 1.0 or dry[i]:
                     theta[i] = min(max(fraction, 0.0), 1.0)
-                    rho[i] = theta[i]
+                    rho[i] = theta[i] * phi[i, 2]
                     continue
             theta[i] = 1.0
-            rho[i] = 1.0
+            rho[i] = phi[i, 2]
             if dry[i]:
                 continue
-        w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, rho)
+        w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, theta)
         r = f[i] - operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2)
         diagonal, off_diagonal = derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2)
         if not jacobi[i]:

@@ -270,10 +270,11 @@ class LineHierarchy:
         #: film fractions per level (1: full film); the cycles solve for them on their top level when the
         #: problem's cavitation is mass-conserving
         self.theta_all = np.ones(total)
-        #: flow factors (a, k) per node and level (:func:`camcontact.ehl._kernels.flow_factor`; (1, 0): isothermal
-        #: Newtonian film), set on the finest level by :meth:`set_flow_factor` and restricted to the coarse ones
-        self.phi_all = np.zeros((total, 2))
+        #: flow factors (a, k) and Couette factor c per node and level (:mod:`camcontact.ehl._kernels`; (1, 0, 1):
+        #: isothermal Newtonian film), set on the finest level by :meth:`set_flow_factor`, restricted to the coarse ones
+        self.phi_all = np.zeros((total, 3))
         self.phi_all[:, 0] = 1.0
+        self.phi_all[:, 2] = 1.0
         self.H0s, self.loads = np.zeros(len(levels)), np.zeros(len(levels))
         self.real_settings = np.array([s.omega_gs, s.omega_jacobi, s.switch, s.h0_relaxation, s.spike_drop])
         #: entry 7: the first node the top level relaxes (1: all; a starved transient step holds the nodes
@@ -297,17 +298,22 @@ class LineHierarchy:
         return self.theta_all[o:o + level.n]
 
     def flow_factor(self, level: _Level) -> np.ndarray:
-        """The flow factors (a, k) of ``level``, shape (n, 2) (a view into the cycles' buffer)."""
+        """The flow factors (a, k) and Couette factors c of ``level``, shape (n, 3) (a view into the cycles'
+        buffer)."""
         o = int(self.offsets[level.k - 1])
         return self.phi_all[o:o + level.n]
 
-    def set_flow_factor(self, factor: np.ndarray, eyring: np.ndarray | None = None) -> None:
-        """Flow factors a = ``factor`` and Eyring coefficients k = ``eyring`` (None: 0) of the finest grid; each
-        coarser level takes the full-weighting restriction of ln a and of k of the level above. Only the finest
-        grid's factors define the solution; the coarse ones only steer its corrections."""
-        values = np.column_stack([np.log(factor), np.zeros(factor.size) if eyring is None else eyring])
+    def set_flow_factor(self, factor: np.ndarray, eyring: np.ndarray | None = None,
+                        couette: np.ndarray | None = None) -> None:
+        """Flow factors a = ``factor``, Eyring coefficients k = ``eyring`` (None: 0) and Couette factors c =
+        ``couette`` (None: 1) of the finest grid; each coarser level takes the full-weighting restriction of ln a,
+        of k and of ln c of the level above. Only the finest grid's factors define the solution; the coarse ones only
+        steer its corrections."""
+        values = np.column_stack([np.log(factor), np.zeros(factor.size) if eyring is None else eyring,
+                                  np.zeros(factor.size) if couette is None else np.log(couette)])
         for index in range(len(self.levels) - 1, -1, -1):
-            self.flow_factor(self.levels[index])[:] = np.column_stack([np.exp(values[:, 0]), values[:, 1]])
+            self.flow_factor(self.levels[index])[:] = np.column_stack([np.exp(values[:, 0]), values[:, 1],
+                                                                       np.exp(values[:, 2])])
             coarse = values[::2].copy()
             coarse[1:-1] = 0.25 * values[1:-2:2] + 0.5 * values[2:-1:2] + 0.25 * values[3::2]
             values = coarse
@@ -411,6 +417,7 @@ def solve_multigrid(
     compiled: bool = True,
     flow_factor: np.ndarray | None = None,
     eyring: np.ndarray | None = None,
+    couette: np.ndarray | None = None,
 ) -> LineEHLSolution:
     """Solve the line-contact problem on ``levels`` grid levels by FAS multigrid.
 
@@ -453,18 +460,26 @@ def solve_multigrid(
         the Poiseuille coefficient, xi = a sqrt(1 + (k eta-bar(P))^2) rho H^3/(eta lambda)
         (:func:`camcontact.ehl._kernels.flow_factor`; None: a = 1, k = 0, the isothermal Newtonian film); the
         thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`) gives the film's viscosity at its
-        temperature and the Reynolds–Eyring flow enhancement through them. Held fixed during the solve; kept on
-        the solution (``flow_factor``, shape (n, 2)). (A full multigrid start solves its start level without
-        them; the cycles on the levels above take them.)
+        temperature and the Reynolds–Eyring flow enhancement through them.
+    couette : array, optional
+        Per node of the finest grid, the Couette factor c > 0 on the wedge's content, q = c rho H (the entrainment
+        flux u_e h = c u_m h of a film whose viscosity varies across it: Yang & Wen's 1990 generalised Reynolds
+        equation; None: 1). Steady solves only (the squeeze term would take it too).
+
+        The factors are held fixed during the solve and kept on the solution (``flow_factor``, shape (n, 3):
+        a, k, c). (A full multigrid start solves its start level without them; the cycles on the levels above
+        take them.)
     """
     if not (isinstance(levels, (int, np.integer)) and 1 <= levels <= 16):
         raise InputError(f"solve_multigrid: levels = {levels!r}; allowed 1..16")
     factors = None
-    if flow_factor is not None or eyring is not None:
+    if flow_factor is not None or eyring is not None or couette is not None:
         n = grid_points(levels)
         factors = [np.ones(n) if flow_factor is None else np.asarray(flow_factor, dtype=float),
-                   np.zeros(n) if eyring is None else np.asarray(eyring, dtype=float)]
-        for name, value, low in (("flow_factor", factors[0], 0.0), ("eyring", factors[1], None)):
+                   np.zeros(n) if eyring is None else np.asarray(eyring, dtype=float),
+                   np.ones(n) if couette is None else np.asarray(couette, dtype=float)]
+        for name, value, low in (("flow_factor", factors[0], 0.0), ("eyring", factors[1], None),
+                                 ("couette", factors[2], 0.0)):
             good = np.isfinite(value) & ((value > low) if low is not None else (value >= 0.0))
             if value.shape != (n,) or not np.all(good):
                 raise InputError(f"solve_multigrid: {name} of shape {value.shape}; allowed: finite values "
@@ -656,7 +671,7 @@ def _converge_finest(solver: LineHierarchy, P: np.ndarray, H0: float, tolerance:
     record = _record(solver, residuals, loads, works, start, converged, message, tolerance)
     theta = solver.theta(finest).copy() if solver.mass_conserving else None
     phi = solver.flow_factor(finest)
-    plain = np.all(phi[:, 0] == 1.0) and np.all(phi[:, 1] == 0.0)
+    plain = np.all(phi[:, 0] == 1.0) and np.all(phi[:, 1] == 0.0) and np.all(phi[:, 2] == 1.0)
     return LineEHLSolution(problem=problem, level=int(levels), X=finest.X, P=P, H=H, H0=float(H0), record=record,
                            settings=settings, theta=theta, flow_factor=None if plain else phi.copy())
 

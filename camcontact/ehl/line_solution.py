@@ -75,8 +75,9 @@ class LineEHLSolution:
     settings: object = attrs.field(default=None, eq=False)
     #: film fraction per node of a mass-conserving solve (None: a full film, the Reynolds cavitation model)
     theta: np.ndarray | None = attrs.field(default=None, repr=False, eq=False)
-    #: flow factors (a, k) per node, shape (n, 2), of the Poiseuille coefficient (None: (1, 0), the isothermal
-    #: Newtonian film; see :func:`camcontact.ehl.line_multigrid.solve_multigrid`)
+    #: flow factors (a, k) of the Poiseuille coefficient and Couette factor c of the wedge per node, shape (n, 3) (or
+    #: (n, 2): c = 1) (None: (1, 0, 1), the isothermal Newtonian film; see
+    #: :func:`camcontact.ehl.line_multigrid.solve_multigrid`)
     flow_factor: np.ndarray | None = attrs.field(default=None, repr=False, eq=False)
 
     @property
@@ -86,6 +87,14 @@ class LineEHLSolution:
         if self.flow_factor is None:
             return np.ones_like(self.P)
         return self.problem.poiseuille_factor(self.P, self.flow_factor[:, 0], self.flow_factor[:, 1])
+
+    @property
+    def couette_factor(self) -> np.ndarray:
+        """c [-] per node: the factor on the wedge's entrainment flux, u_e = c u_m (1: a film whose viscosity does
+        not vary across it; :func:`camcontact.ehl.line_multigrid.solve_multigrid`)."""
+        if self.flow_factor is None or self.flow_factor.shape[1] < 3:
+            return np.ones_like(self.P)
+        return self.flow_factor[:, 2]
 
     @property
     def film_fraction(self) -> np.ndarray:
@@ -114,10 +123,11 @@ class LineEHLSolution:
         full film and 0 elsewhere (:func:`camcontact.ehl._kernels.wedge_weight`; G_0 = q_0 + phi_1 (q_1 - q_0)/2 for the
         first-order first node),
         so that F_(i+1/2) - F_(i-1/2) = -h L_i: constant where the discrete Reynolds equation holds,
-        through pressurised and cavitated nodes alike (mass conservation). Steady operator (s = 1)."""
+        through pressurised and cavitated nodes alike (mass conservation). Steady operator (s = 1); the wedge
+        carries c q (c the Couette factor, :attr:`couette_factor`)."""
         problem, P, H = self.problem, self.P, self.H
         h = float(self.X[1] - self.X[0])
-        q = self.content
+        q = self.content * self.couette_factor
         xi = problem.flow_coefficient(P, H)
         if self.flow_factor is not None:
             xi = xi * self.poiseuille_factor

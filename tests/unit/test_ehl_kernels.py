@@ -37,7 +37,8 @@ def test_residual_twin(name):
     codes, params = problem.law_codes, problem.law_parameters
     python, compiled = np.empty(X.size), np.empty(X.size)
     full = np.ones(X.size)
-    phi = np.column_stack([1.0 + 0.5 * np.sin(3.0 * X), 1e-3 * (1.0 + X**2)])  # flow factors varying node to node
+    # flow and Couette factors varying node to node
+    phi = np.column_stack([1.0 + 0.5 * np.sin(3.0 * X), 1e-3 * (1.0 + X**2), 1.0 + 0.1 * np.cos(2.0 * X)])
     _kernels.PY[name](P, H, full, phi, h, problem.lam, *codes, params, 1.0, 0.0, python)
     _kernels.compiled(name)(P, H, full, phi, h, problem.lam, *codes, params, 1.0, 0.0, compiled)
     np.testing.assert_allclose(compiled, python, rtol=1e-12, atol=1e-12)

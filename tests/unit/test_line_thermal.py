@@ -50,10 +50,37 @@ def test_a_uniform_flow_factor_is_a_smaller_lambda():
     assert np.ptp(flux[wet]) < 1e-5 * np.abs(flux[wet]).max()
 
 
+def test_a_uniform_couette_factor_is_the_inverse_flow_factor():
+    """The wedge content c rho H with c uniform is the operator c L' of the flow factor 1/c (L' = d/dX(xi/c P') -
+    d(rho H)/dX): the same discrete solution (and so the problem with lambda c, the speed u_m c)."""
+    problem = LineEHLProblem(M=20.0, L=10.0)
+    n = problem.grid(7).size
+    with_couette = solve_multigrid(problem, 7, tolerance=1e-10, couette=np.full(n, 1.3))
+    with_factor = solve_multigrid(problem, 7, tolerance=1e-10, flow_factor=np.full(n, 1.0 / 1.3))
+    np.testing.assert_allclose(with_couette.H, with_factor.H, rtol=1e-8)
+    np.testing.assert_allclose(with_couette.couette_factor, 1.3)
+    plain = solve_multigrid(problem, 7, tolerance=1e-10)
+    assert with_couette.H_c > 1.1 * plain.H_c  # more entrainment, a thicker film
+
+
+def test_a_varying_couette_factor_conserves_the_mass_flux():
+    """A Couette factor varying along the film (as a heated film in sliding has): the solution's mass flux
+    c rho H - xi dP/dX (LineEHLSolution.mass_flux) is constant through the pressurised contact."""
+    problem = LineEHLProblem(M=20.0, L=10.0)
+    X = problem.grid(7)
+    solution = solve_multigrid(problem, 7, tolerance=1e-10, couette=1.0 + 0.05 * np.tanh(X))
+    flux = solution.mass_flux
+    wet = (solution.P[:-1] > 0) & (solution.P[1:] > 0)
+    assert np.ptp(flux[wet]) < 1e-5 * np.abs(flux[wet]).max()
+    plain = solve_multigrid(problem, 7, tolerance=1e-10)
+    assert abs(solution.H_c / plain.H_c - 1.0) > 1e-3  # the factor acts
+
+
+@pytest.mark.parametrize("name", ["flow_factor", "couette"])
 @pytest.mark.parametrize("factor", [np.ones(5), -np.ones(7 * 32 + 1), np.full(7 * 32 + 1, np.nan)])
-def test_flow_factor_is_checked_at_the_door(factor):
-    with pytest.raises(InputError, match="flow_factor"):
-        solve_multigrid(LineEHLProblem(M=20.0, L=10.0), 6, flow_factor=factor)
+def test_flow_factor_is_checked_at_the_door(name, factor):
+    with pytest.raises(InputError, match=name):
+        solve_multigrid(LineEHLProblem(M=20.0, L=10.0), 6, **{name: factor})
 
 
 # ------------------------------------------------------------------------------ isothermal Newtonian limit
