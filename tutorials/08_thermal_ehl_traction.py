@@ -8,8 +8,9 @@
 # 1. the isothermal Newtonian solver (`solve_multigrid`) with the lumped traction model;
 # 2. the thermal formula factors for the film, with the lumped thermal traction model;
 # 3. the thermal, non-Newtonian solver `camcontact.ehl.line_thermal.solve_thermal`. It solves
-#    the energy equation at nine points across the film, with the Eyring film's flow, and
-#    couples it to both surfaces.
+#    the energy equation at nine points across the film, with the Eyring film's flow and a
+#    viscosity that follows the temperature across the film (Yang & Wen's generalised
+#    Reynolds equation), and couples it to both surfaces.
 #
 # This tutorial solves one contact on rung 3 and looks at its fields. It then draws the
 # traction curve on the three rungs with their costs, and uses the solver inside a
@@ -121,14 +122,15 @@ for name, values in rungs.items():
 #
 # * The isothermal Eyring traction keeps rising with S, as a fluid that never heats would.
 # * Both thermal rungs level off and then fall, because the film heats and its viscosity drops.
-# * The thermal solver sits 5–7 % below the lumped thermal model: it resolves where the heat is made
-#   and where it goes.
-# * For the film, the numbers disagree more: the solver thins the film much less with sliding than
-#   the formula factors say (0.90 at S = 1 against 0.78 and 0.54). The formulas also disagree with
+# * The thermal solver sits 11–18 % below the lumped thermal model: it resolves where the heat is made
+#   and where it goes, and the shear gathers in the film's hot mid-layer, whose low viscosity one
+#   contact temperature does not see.
+# * For the film, the numbers disagree more: the solver thins the film less with sliding than
+#   the formula factors say (0.89 at S = 1 against 0.78 and 0.54). The formulas also disagree with
 #   each other.
 #
 # Use the formulas for screening. Use the solver where the traction and temperature matter; at
-# level 10 it costs 5–6 isothermal solves.
+# level 10 it costs 5–7 isothermal solves.
 
 # %% [markdown]
 # ## 3. Inside an Analysis: the pellet-mill contact

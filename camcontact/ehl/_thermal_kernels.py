@@ -1,7 +1,8 @@
 """Numba kernels of the thermal, non-Newtonian line EHL solver (:mod:`camcontact.ehl.line_thermal`), each with
 its plain-Python twin (see :mod:`camcontact.jit`).
 
-Film rheology (per node, viscosity eta uniform across the film): an Eyring fluid, du/dz = (tau0/eta)
+Film rheology (per node; first for a viscosity eta uniform across the film, below for one varying across it): an
+Eyring fluid, du/dz = (tau0/eta)
 sinh(tau/tau0), under the shear stress tau(z) = tau_m + p' (z - h/2) of a thin film (p' = dp/dx, tau_m the
 mid-plane stress). Integrated across the film in closed form, with s = h p'/(2 tau0) and
 Lambda = eta (u2 - u1)/(tau0 h):
@@ -31,6 +32,17 @@ Poiseuille heat would rise as the viscosity falls, and the first energy model ra
 pressure spike of an isothermal start (measured: S = 0.02, level 8); the spike's flow then adjusts in the
 Reynolds solve.
 
+Viscosity varying across the film (:func:`film_profile`; Yang & Wen's 1990 generalised Reynolds equation, here in
+the same s -> 0 limit): with inv(zeta) = eta_ref/eta(zeta), F0 = int_0^zeta inv and F1 = int_0^zeta zeta inv, the
+Couette stress tau_c is that of the harmonic-mean viscosity eta_ref/F0(1), the Poiseuille flux is
+q_P = Phi p' h^3 C_P/eta_ref with C_P = -int (zeta - zeta*)^2 inv (zeta* = F1(1)/F0(1); -1/12 uniform), and the
+entrainment flux is h (u1 + (u2 - u1)(1 - zeta*)), u_m h only in pure rolling or for a symmetric profile. The
+solver takes a = -12 C_P (against the uniform film at eta_ref), the Eyring coefficient at the harmonic mean and the
+Couette factor c = (u1 + (u2 - u1)(1 - zeta*))/u_m (:mod:`camcontact.ehl._kernels`). The dissipation at a film
+point is (tau_c + delta)(du inv/(h F0(1)) + Phi delta inv/eta_ref), delta = p' h (zeta - zeta*), which integrates
+to the uniform film's Q when inv is uniform. Checked against Nahme's closed form of a heated Couette film
+(tests/unit/test_line_thermal.py).
+
 Energy (:func:`layer_sweep`): the temperature at N + 1 Chebyshev–Lobatto points across the film (the two
 surfaces included) at every node of a uniform grid along x,
 
@@ -39,14 +51,16 @@ surfaces included) at every node of a uniform grid along x,
     + \\tau\\dot\\gamma, \\qquad
     T_j(x) - T_0 = \\frac{1}{e_j\\sqrt{\\pi u_j}}\\int_{-\\infty}^{x}\\frac{q_j(s)}{\\sqrt{x - s}}\\,ds
 
-with the film's velocity profile u(zeta) = u1 + (u2 - u1) zeta + 6 (q_P/h) zeta (1 - zeta) (its reverse flow in
-the inlet included: the x-derivative is upwinded by the sign of u at each film point, and downstream and
-upstream sweeps alternate), the local dissipation tau gamma-dot of the film's linear stress profile, and each
-surface a half-space moving at u_j under the heat flux q_j it takes from the film (Jaeger 1942, high Peclet
-number; e_j its effusivity), q_j piecewise constant on the cells of the grid. Conduction along x and the
-convection across the film (w dT/dz) are neglected (thin film). The viscosity is uniform across the film at
-the film's mean temperature: the system of a node is linear for a given mean, and the mean is found as the
-root of t = mean(T(t)) by the Illinois method.
+with the film's velocity profile u(zeta) = u1 + (u2 - u1) F0/F0(1) + (q_P/h)(F1 - zeta* F0)/C_P (u1 + (u2 - u1) zeta +
+6 (q_P/h) zeta (1 - zeta) for a uniform viscosity; its reverse flow in the inlet included: the x-derivative is
+upwinded by the sign of u at each film point, and downstream and upstream sweeps alternate), the local dissipation tau
+gamma-dot of the film's linear stress profile, and each surface a half-space moving at u_j under the heat flux q_j it
+takes from the film (Jaeger 1942, high Peclet number; e_j its effusivity), q_j piecewise constant on the cells of the
+grid. Conduction along x and the convection across the film (w dT/dz) are neglected (thin film). The viscosity at film
+point j is eta_iso exp(-beta (t + d_j)): t the film's mean temperature rise, d_j the point's rise above the mean in
+the node's present temperatures (lagged from sweep to sweep, beta |d_j| bounded by :data:`PROFILE_BOUND`; d_j = 0
+without ``cross``: the viscosity uniform at the mean). The system of a node is linear for a given t, and t is found as
+the root of t = mean(T(t)) by the Illinois method.
 """
 
 from __future__ import annotations
@@ -64,6 +78,13 @@ __all__ = ["PY", "compiled"]
 #: largest temperature rise the march looks for [K]: a node whose balance has no root below it (a Newtonian
 #: film in heavy sliding, thermal runaway) is reported at this rise and counted as not converged
 MAX_RISE = 1000.0
+#: largest |beta (T_j - T_mean)| the film's viscosity profile takes (a viscosity e^2 = 7.4 times the mean's at most,
+#: e^4 = 55 from the film's coolest to its hottest point): the nine film points do not resolve the shear bands of
+#: a film sheared far beyond its Eyring stress, and an unbounded profile fed them (measured at level 7: p_h 1.9 GPa
+#: and S = 1.5, beta (T_j - T_mean) from -6.3 to 3.7 and no convergence in 40 iterations; a Newtonian film at
+#: 20 m/s and S = 0.3 overflowed). The film-forming inlet stays well inside it (measured: within +-0.8 up to a
+#: thermal loading of 3.4)
+PROFILE_BOUND = 2.0
 
 
 @helper
@@ -89,6 +110,52 @@ def film_state(eta, h, flux, du, tau0, limit):
     return tau_m, phi, tau_m * du + 12.0 * eta * flux * flux / (phi * h * h * h)
 
 
+@helper
+def profile_offset(beta, deviation):
+    """beta times a film point's temperature above the film's mean, bounded by +-:data:`PROFILE_BOUND`."""
+    return min(max(beta * deviation, -PROFILE_BOUND), PROFILE_BOUND)
+
+
+@helper
+def film_profile(inv, eta_ref, h, flux, du, tau0, limit, zeta, integral, weights, F0, F1):
+    """The film of a viscosity varying across it, eta(zeta) = eta_ref / inv(zeta) at the film points zeta_j
+    (Yang & Wen 1990, in the Reynolds–Eyring limit of Conry et al. 1987: the stress's Poiseuille part is a small
+    perturbation of the uniform Couette stress tau_c).
+
+    Fills F0_j = int_0^zeta_j inv and F1_j = int_0^zeta_j zeta inv (``integral`` the collocation's antiderivative
+    matrix) and returns (tau_c [Pa], Phi [-], F0(1) [-], C_P [-], zeta* [-]):
+
+    * the Couette stress tau_c and Eyring factor Phi = cosh(tau_c/tau0) of :func:`film_state` at the film's
+      Couette viscosity eta_ref/F0(1) (the harmonic mean), which shears the film by du in all;
+    * the Poiseuille flux q_P = Phi p' h^3 C_P/eta_ref with C_P = -int (zeta - zeta*)^2 inv (-1/12 for a uniform
+      viscosity; the integral of the Poiseuille velocity h^2 p' (F1 - zeta* F0)/eta_ref by parts, in this form
+      free of cancellation), zeta* = F1(1)/F0(1): the Poiseuille stress p' h (zeta - zeta*) adds no net shear;
+    * the entrainment (Couette) flux h (u1 + du m), m = 1 - zeta* (1/2 uniform), and the velocity
+      u(zeta) = u1 + du F0/F0(1) + (q_P/h)(F1 - zeta* F0)/C_P.
+
+    The film's integrals are the collocation's quadrature (``weights``). Uniform inv gives the uniform film."""
+    N = inv.shape[0] - 1
+    for j in range(N + 1):
+        s0 = 0.0
+        s1 = 0.0
+        for c in range(N + 1):
+            s0 += integral[j, c] * inv[c]
+            s1 += integral[j, c] * zeta[c] * inv[c]
+        F0[j] = s0
+        F1[j] = s1
+    total = 0.0
+    first = 0.0
+    for j in range(N + 1):
+        total += weights[j] * inv[j]
+        first += weights[j] * zeta[j] * inv[j]
+    z_star = first / total
+    C_P = 0.0
+    for j in range(N + 1):
+        C_P -= weights[j] * (zeta[j] - z_star) * (zeta[j] - z_star) * inv[j]
+    tau_c, Phi, _ = film_state(eta_ref / total, h, flux, du, tau0, limit)
+    return tau_c, Phi, total, C_P, z_star
+
+
 @register_jitable
 def jaeger_weights(dx, n):
     """w_d = int over cell j = i - d of 1/sqrt(x_i - s) ds [m^0.5], cells [x_j - dx/2, x_j + dx/2] cut at x_i:
@@ -103,18 +170,25 @@ def jaeger_weights(dx, n):
 @register_jitable
 def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
     """Temperature rises at the film points of node i (returned, with their film mean) for the film viscosity
-    eta_iso[i] exp(-beta t) (t the film's mean temperature rise assumed; see :func:`layer_sweep`). ``film`` =
-    (h, eta_iso, flux, limit) per node, ``params`` = (u1, du, tau0, beta, k, rho c, c1, c2) with c_j = C_j w_0,
-    ``collocation`` = (zeta, D, D2, weights); A and b are work arrays."""
+    eta_iso[i] exp(-beta (t + d_j)) (t the film's mean temperature rise assumed; d_j the node's present
+    profile about its mean with ``cross`` set, else 0; see :func:`layer_sweep`). ``film`` = (h, eta_iso, flux,
+    limit) per node, ``params`` = (u1, du, tau0, beta, k, rho c, c1, c2, cross) with c_j = C_j w_0, ``collocation``
+    = (zeta, D, D2, weights, integral, inv, F0, F1); A and b are work arrays."""
     h, eta_iso, flux, limit = film
-    u1, du, tau0, beta, conductivity, heat_capacity, c1, c2 = params
-    zeta, D, D2, weights = collocation
+    u1, du, tau0, beta, conductivity, heat_capacity, c1, c2, cross = params
+    zeta, D, D2, weights, integral, inv, F0, F1 = collocation
     N = zeta.shape[0] - 1
     n = h.shape[0]
     hi = h[i]
-    eta = eta_iso[i] * math.exp(-beta * t)
-    tau_m, Phi, Q = film_state(eta, hi, flux[i], du, tau0, limit[i])
-    gradient = -12.0 * eta * flux[i] / (Phi * hi * hi * hi)
+    present = 0.0
+    if cross:
+        for j in range(N + 1):
+            present += weights[j] * T[i, j]
+    for j in range(N + 1):
+        inv[j] = math.exp(beta * t + (profile_offset(beta, T[i, j] - present) if cross else 0.0))
+    tau_c, Phi, total, C_P, z_star = film_profile(inv, eta_iso[i], hi, flux[i], du, tau0, limit[i], zeta, integral,
+                                                  weights, F0, F1)
+    gradient = flux[i] * eta_iso[i] / (Phi * hi * hi * hi * C_P)
     kh = conductivity / hi
     for r in range(N + 1):
         for c in range(N + 1):
@@ -127,8 +201,8 @@ def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
     b[0] = A1
     b[N] = A2
     for j in range(1, N):
-        u = u1 + du * zeta[j] + 6.0 * (flux[i] / hi) * zeta[j] * (1.0 - zeta[j])
-        delta = gradient * hi * (zeta[j] - 0.5)
+        u = u1 + du * F0[j] / total + (flux[i] / hi) * (F1[j] - z_star * F0[j]) / C_P
+        delta = gradient * hi * (zeta[j] - z_star)
         carry = heat_capacity * abs(u) / dx
         if u >= 0.0:
             neighbour = T[i - 1, j]
@@ -137,7 +211,7 @@ def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
         for c in range(N + 1):
             A[j, c] = -conductivity / (hi * hi) * D2[j, c]
         A[j, j] += carry
-        b[j] = (tau_m + delta) * (du / hi + Phi * delta / eta) + carry * neighbour
+        b[j] = (tau_c + delta) * inv[j] * (du / (hi * total) + Phi * delta / eta_iso[i]) + carry * neighbour
     x, ok = solve_dense(A, b)
     mean = 0.0
     for j in range(N + 1):
@@ -148,8 +222,66 @@ def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
 
 
 @register_jitable
+def node_temperatures(i, dx, film, params, A1, A2, collocation, T, A, b, tolerance, max_iterations):
+    """(temperature rises at node i's film points, failed): the root Tm = mean(T(Tm)) of :func:`layer_node` by the
+    Illinois method on a bracket widened from the node's present mean (see :func:`layer_sweep`); failed where no
+    root lies within +-:data:`MAX_RISE` or the balance is not finite."""
+    N = T.shape[1] - 1
+    beta = params[3]
+    weights = collocation[3]
+    failed = False
+    previous = 0.0
+    for j in range(N + 1):
+        previous += weights[j] * T[i, j]
+    # F(t) = t - mean(T(t)) increases with t: bracket the root from the previous mean, then Illinois
+    low = min(max(previous, -MAX_RISE), MAX_RISE)
+    x, mean = layer_node(i, low, dx, film, params, A1, A2, collocation, T, A, b)
+    f_low = low - mean
+    if beta == 0.0 or f_low == 0.0 or not math.isfinite(f_low):
+        T_new = x
+        if not math.isfinite(f_low):
+            failed = True
+    else:
+        step = abs(f_low) + 1.0
+        high = low
+        f_high = f_low
+        sign = 1.0 if f_low < 0.0 else -1.0  # the root lies above (F < 0) or below
+        while f_high * f_low > 0.0 and abs(high) < MAX_RISE:
+            low, f_low = high, f_high
+            high = min(max(low + sign * step, -MAX_RISE), MAX_RISE)
+            step *= 2.0
+            x, mean = layer_node(i, high, dx, film, params, A1, A2, collocation, T, A, b)
+            f_high = high - mean
+        T_new = x
+        if f_high * f_low > 0.0 or not math.isfinite(f_high):
+            failed = True  # no root within +-MAX_RISE: kept at the bound
+        else:
+            side = 0
+            for _ in range(max_iterations):
+                if abs(f_high) <= tolerance or abs(high - low) <= tolerance:
+                    break
+                t = (low * f_high - high * f_low) / (f_high - f_low)
+                x, mean = layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b)
+                f_t = t - mean
+                T_new = x
+                if f_t * f_high > 0.0:
+                    high, f_high = t, f_t
+                    if side == 1:
+                        f_low *= 0.5
+                    side = 1
+                else:
+                    low, f_low = t, f_t
+                    if side == -1:
+                        f_high *= 0.5
+                    side = -1
+                if abs(f_t) <= tolerance:
+                    break
+    return T_new, failed
+
+
+@register_jitable
 def layer_sweep(direction, dx, h, eta_iso, flux, limit, u1, du, tau0, beta, conductivity, heat_capacity, C1, C2, zeta,
-                D, D2, weights, T, q1, q2, tolerance, max_iterations):
+                D, D2, weights, integral, T, q1, q2, tolerance, max_iterations, cross):
     """One sweep of the cross-film energy equation over the nodes 1..n-1 (``direction`` +1: downstream, -1:
     upstream), in place on the temperature rises T[i, j] [K] at the film points zeta_j (0 and 1 the
     surfaces) and the surface heat fluxes q1, q2 [W/m^2]. Returns (largest change of T [K], nodes whose film
@@ -159,21 +291,21 @@ def layer_sweep(direction, dx, h, eta_iso, flux, limit, u1, du, tau0, beta, cond
     (upwind in x by the sign of u_j: the inlet's reverse flow takes the downstream neighbour), the surfaces
     T_i0 = A_1 + C_1 w_0 q_1, q_1 = (k/h) dT/dzeta(0) and T_iN = A_2 + C_2 w_0 q_2, q_2 = -(k/h) dT/dzeta(1)
     (Jaeger, A_j the upstream history), all together as one dense (N+1) system with the collocation
-    derivative matrices D, D2 (d/dzeta). Velocity u_j = u1 + du zeta_j + 6 (q_P/h) zeta_j (1 - zeta_j) and
-    dissipation Q_j = (tau_m + delta_j)(du/h + Phi delta_j/eta), delta_j = p' h (zeta_j - 1/2),
-    p' = -12 eta q_P/(Phi h^3), q_P = ``flux`` the node's Poiseuille flux (held), tau_m and Phi from
-    :func:`film_state` (``limit`` the node's limiting shear stress [Pa]), eta = eta_iso exp(-beta Tm) at the
-    film's mean temperature rise Tm: the system is
-    linear for a given Tm, and Tm = mean(T(Tm)) (one root: the dissipation falls as Tm rises) is solved by the
-    Illinois method on a bracket widened from the node's previous mean, to ``tolerance`` [K]. Node 0 (inlet)
+    derivative matrices D, D2 (d/dzeta) and the antiderivative matrix ``integral``. Velocity u_j and dissipation
+    Q_j of the film's viscosity profile (module docstring, :func:`film_profile`; ``limit`` the node's limiting
+    shear stress [Pa]), q_P = ``flux`` the node's Poiseuille flux (held), the viscosity eta_iso exp(-beta (Tm +
+    d_j)) at the film's mean temperature rise Tm and the node's present profile d_j about it (``cross``; else
+    uniform): the system is linear for a given Tm, and Tm = mean(T(Tm)) (one root: the dissipation falls as Tm
+    rises) is solved by the Illinois method on a bracket widened from the node's previous mean, to ``tolerance``
+    [K] (:func:`node_temperatures`). Node 0 (inlet)
     holds T = 0 where the flow enters and takes its neighbour's temperature where it leaves (reverse flow).
     """
     n = h.shape[0]
     N = zeta.shape[0] - 1
     w = jaeger_weights(dx, n)
     film = (h, eta_iso, flux, limit)
-    params = (u1, du, tau0, beta, conductivity, heat_capacity, C1 * w[0], C2 * w[0])
-    collocation = (zeta, D, D2, weights)
+    params = (u1, du, tau0, beta, conductivity, heat_capacity, C1 * w[0], C2 * w[0], cross)
+    collocation = (zeta, D, D2, weights, integral, np.empty(N + 1), np.empty(N + 1), np.empty(N + 1))
     A = np.empty((N + 1, N + 1))
     b = np.empty(N + 1)
     largest = 0.0
@@ -190,52 +322,9 @@ def layer_sweep(direction, dx, h, eta_iso, flux, limit, u1, du, tau0, beta, cond
             A2 += w[i - m] * q2[m]
         A1 *= C1
         A2 *= C2
-        previous = 0.0
-        for j in range(N + 1):
-            previous += weights[j] * T[i, j]
-        # F(t) = t - mean(T(t)) increases with t: bracket the root from the previous mean, then Illinois
-        low = min(max(previous, -MAX_RISE), MAX_RISE)
-        x, mean = layer_node(i, low, dx, film, params, A1, A2, collocation, T, A, b)
-        f_low = low - mean
-        if beta == 0.0 or f_low == 0.0 or not math.isfinite(f_low):
-            T_new = x
-            if not math.isfinite(f_low):
-                failed += 1
-        else:
-            step = abs(f_low) + 1.0
-            high = low
-            f_high = f_low
-            sign = 1.0 if f_low < 0.0 else -1.0  # the root lies above (F < 0) or below
-            while f_high * f_low > 0.0 and abs(high) < MAX_RISE:
-                low, f_low = high, f_high
-                high = min(max(low + sign * step, -MAX_RISE), MAX_RISE)
-                step *= 2.0
-                x, mean = layer_node(i, high, dx, film, params, A1, A2, collocation, T, A, b)
-                f_high = high - mean
-            T_new = x
-            if f_high * f_low > 0.0 or not math.isfinite(f_high):
-                failed += 1  # no root within +-MAX_RISE: kept at the bound
-            else:
-                side = 0
-                for _ in range(max_iterations):
-                    if abs(f_high) <= tolerance or abs(high - low) <= tolerance:
-                        break
-                    t = (low * f_high - high * f_low) / (f_high - f_low)
-                    x, mean = layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b)
-                    f_t = t - mean
-                    T_new = x
-                    if f_t * f_high > 0.0:
-                        high, f_high = t, f_t
-                        if side == 1:
-                            f_low *= 0.5
-                        side = 1
-                    else:
-                        low, f_low = t, f_t
-                        if side == -1:
-                            f_high *= 0.5
-                        side = -1
-                    if abs(f_t) <= tolerance:
-                        break
+        T_new, bad = node_temperatures(i, dx, film, params, A1, A2, collocation, T, A, b, tolerance, max_iterations)
+        if bad:
+            failed += 1
         for j in range(N + 1):
             change = abs(T_new[j] - T[i, j])
             if change > largest:
@@ -261,11 +350,42 @@ def layer_sweep(direction, dx, h, eta_iso, flux, limit, u1, du, tau0, beta, cond
 
 
 
-@helper
-def film_fields(eta, h, flux, limit, du, tau0, tau, phi, Q):
-    """:func:`film_state` at every node, in place on tau [Pa], phi [-] and Q [W/m^2]."""
-    for i in range(h.shape[0]):
-        tau[i], phi[i], Q[i] = film_state(eta[i], h[i], flux[i], du, tau0, limit[i])
+@register_jitable
+def film_fields(eta_iso, h, flux, limit, du, tau0, beta, T, cross, zeta, integral, weights, tau, phi, Q, a, total, m):
+    """The film at every node, in place: its mid-plane shear stress tau [Pa] (the mean of the two surfaces'),
+    Eyring factor phi [-], dissipation per unit area Q [W/m^2], and the generalised Reynolds factors of its
+    viscosity profile (:func:`film_profile`): a = -12 C_P (the Poiseuille coefficient against a uniform film at
+    eta_iso), total = F0(1) (eta_iso over the Couette viscosity) and m = 1 - zeta* (the entrainment flux's share of
+    the sliding speed). The viscosity
+    eta_iso exp(-beta T_j) at the film points' temperature rises T[i, j]; without ``cross`` uniform at their mean."""
+    n = h.shape[0]
+    N = zeta.shape[0] - 1
+    inv = np.empty(N + 1)
+    F0 = np.empty(N + 1)
+    F1 = np.empty(N + 1)
+    for i in range(n):
+        mean = 0.0
+        for j in range(N + 1):
+            mean += weights[j] * T[i, j]
+        for j in range(N + 1):
+            inv[j] = math.exp(beta * mean + (profile_offset(beta, T[i, j] - mean) if cross else 0.0))
+        hi = h[i]
+        if hi <= 0.0:
+            tau[i], phi[i], Q[i], a[i], total[i], m[i] = 0.0, 1.0, 0.0, 1.0, 1.0, 0.5
+            continue
+        tau_c, Phi, F_total, C_P, z_star = film_profile(inv, eta_iso[i], hi, flux[i], du, tau0, limit[i], zeta,
+                                                        integral, weights, F0, F1)
+        gradient = flux[i] * eta_iso[i] / (Phi * hi * hi * hi * C_P)
+        heat = 0.0
+        for j in range(N + 1):
+            delta = gradient * hi * (zeta[j] - z_star)
+            heat += weights[j] * (tau_c + delta) * inv[j] * (du / (hi * F_total) + Phi * delta / eta_iso[i])
+        tau[i] = tau_c + gradient * hi * (0.5 - z_star)
+        phi[i] = Phi
+        Q[i] = heat * hi
+        a[i] = -12.0 * C_P
+        total[i] = F_total
+        m[i] = 1.0 - z_star
 
 
 PY = {"film_state": film_state, "layer_sweep": layer_sweep, "film_fields": film_fields}

@@ -3,19 +3,22 @@
 The isothermal Newtonian solver (:func:`camcontact.ehl.line_multigrid.solve_multigrid`) solves the Reynolds
 equation with a flow factor per node on its Poiseuille coefficient, xi = F rho H^3/(eta lambda),
 F = a sqrt(1 + (k eta-bar(P))^2) (a = 1, k = 0: isothermal Newtonian; :func:`camcontact.ehl._kernels.flow_factor`).
-This module supplies a (the film's viscosity at its temperature, exp(beta dT)) and k (the Eyring coefficient,
-eta0 exp(-beta dT) |u2 - u1|/(tau0 h)) from the film's rheology and temperature, in a fixed-point iteration
-around that solver:
+This module supplies a (the Poiseuille coefficient of the film's viscosity profile against the isothermal film's;
+exp(beta dT) for a viscosity uniform at the film's temperature rise dT), k (the Eyring coefficient,
+eta0 |u2 - u1|/(tau0 h) at the film's Couette viscosity) and, in sliding, the Couette factor c on the wedge (the
+entrainment flux u_e h = c u_m h of a film whose viscosity varies across it) from the film's rheology and
+temperature, in a fixed-point iteration around that solver:
 
 1. solve the Reynolds and film equations with phi (warm-started from the previous solution);
 2. from the pressure and film, solve the energy equation in the film and the surfaces
    (:func:`camcontact.ehl._thermal_kernels.layer_sweep`: the temperature at nine points across the film along
    x, with the film's velocity profile and its reverse flow in the inlet; the surfaces as moving half-spaces),
-   with the viscosity eta(p, T) = eta(p, T0) exp(-beta (Tm - T0)) at the film's mean temperature Tm;
-3. the new (ln a, ln k) from the temperatures and the film; the next ones by Anderson mixing (Walker & Ni 2011)
-   of the iterates; stop when the mean of |ln F_new - ln F| (F = Phi exp(beta (Tm - T0)), Phi the Eyring film's
-   Poiseuille flow factor, at the current pressure) over the wet nodes (inlet to the last pressurised node) is
-   below ``flow_tolerance`` and the films and the traction have settled (or its largest value is below the
+   with the viscosity eta(p, T) = eta(p, T0) exp(-beta (T - T0)) at each film point's temperature T (Yang & Wen's
+   generalised Reynolds equation; ``cross_film=False``: uniform at the film's mean temperature Tm);
+3. the new (ln a, ln k, ln c) from the temperatures and the film; the next ones by Anderson mixing (Walker & Ni
+   2011) of the iterates; stop when the mean of |ln F_new - ln F| + |ln c_new - ln c| (F = a Phi, Phi the Eyring
+   film's Poiseuille flow factor, at the current pressure) over the wet nodes (inlet to the last pressurised node)
+   is below ``flow_tolerance`` and the films and the traction have settled (or its largest value is below the
    tolerance too). The Eyring factor's dependence on the pressure (through eta-bar) stays in the kernels: frozen
    per node, it turned the Hertz zone of a heavily loaded contact into one of 1000 times its load parameter M
    and the multigrid diverged (measured: M = 28, L = 14, S = 0.1).
@@ -27,35 +30,42 @@ with the mixed flow factors is retried with shorter plain steps; the record says
 
 Models (equations in :mod:`camcontact.ehl._thermal_kernels`):
 
-* **Rheology**: Newtonian, or Eyring du/dz = (tau0/eta) sinh(tau/tau0) with eta uniform across the film, in
-  the Reynolds–Eyring form of Conry, Wang & Cusano (1987): sinh(tau_m/tau0) = eta (u2 - u1)/(tau0 h), Poiseuille
-  flow factor cosh(tau_m/tau0). The same rheology as the lumped traction model
-  :mod:`camcontact.contact.fluid_traction` (Johnson & Tevaarwerk 1977), of which this solver is the numerical
-  top rung. A limiting shear stress is not modelled here.
+* **Rheology**: Newtonian, or Eyring du/dz = (tau0/eta) sinh(tau/tau0), in the Reynolds–Eyring form of Conry, Wang &
+  Cusano (1987): sinh(tau_c/tau0) = eta_c (u2 - u1)/(tau0 h) at the film's Couette (harmonic-mean) viscosity eta_c,
+  Poiseuille flow factor cosh(tau_c/tau0) on the Poiseuille coefficient of the viscosity profile (Yang & Wen 1990 in
+  that limit; :func:`camcontact.ehl._thermal_kernels.film_profile`). The same rheology as the lumped traction model
+  :mod:`camcontact.contact.fluid_traction` (Johnson & Tevaarwerk 1977), of which this solver is the numerical top
+  rung. A limiting shear stress is not modelled here.
 * **Temperature**: the energy equation of the film at nine Chebyshev points across it (convection along x
   with the local velocity, conduction across, the local dissipation of the linear stress profile), coupled to
   the surfaces as half-spaces moving through the contact (Jaeger 1942; Carslaw & Jaeger 1959 §10.7) — the
   structure of the thermal line EHL analyses of Sadeghi & Sui (1990), which solve the same film energy
   equation by finite differences. The viscosity follows exp(-beta dT) with one temperature–viscosity
-  coefficient beta (as the lumped traction model and the film-reduction formulas' thermal loading do).
-* **Simplifications (camcontact's, stated)**: the viscosity is uniform across the film at its mean
-  temperature (no cross-film viscosity profile, so the Couette flow stays u_m h: Yang & Wen's (1990)
-  generalised Reynolds terms of a cross-film viscosity variation are not included); density and heat
-  capacity do not depend on temperature or pressure; no compression heating (alpha_T T u dp/dx) and no
-  conduction along x; downstream of the film rupture the film is treated as full (it no longer affects the
-  pressure); the inlet lubricant and both surfaces enter at T0. The energy equation runs on every 2^k-th node of
-  the EHL grid (at most :data:`LAYER_NODES` nodes), its temperatures interpolated back.
+  coefficient beta (as the lumped traction model and the film-reduction formulas' thermal loading do), at each
+  film point. Its profile about the film's mean is bounded, beta |T - Tm| <= PROFILE_BOUND = 2 (a film sheared into
+  bands the nine points do not resolve: Newtonian heavy sliding, or an Eyring film far beyond its stress); the nodes
+  where the bound holds the profile are reported (``profile_bounded``, the record's message), and their films depend
+  on it (measured: a Newtonian film at S = 1.5, u_m 5 m/s, p_h 1.9 GPa, h_c/h_c,iso 0.69 with the bound 2 and not
+  converged, 0.82 with the bound 0.5). * **Simplifications (camcontact's, stated)**: the transient march keeps the
+  Couette factor at 1 (its squeeze content would take it too); density and heat capacity do not depend on temperature
+  or pressure; no compression heating (alpha_T T u dp/dx) and no conduction along x; downstream of the film rupture
+  the film is treated as full (it no longer affects the pressure); the inlet lubricant and both surfaces enter at T0.
+  The energy equation runs on every 2^k-th node of the EHL grid (at most :data:`LAYER_NODES` nodes), its temperatures
+  interpolated back.
 
-Validation (tests): in the isothermal Newtonian limit phi = 1 and the solution is the isothermal solver's,
-node for node. The thermal film reduction of pure rolling lies within 4-6 % of the inlet shear-heating factor of
-Murch & Wilson (1975) over thermal loadings L_m = 0.2-3.4 (the reduction 1 - phi_T itself is 60-90 % of theirs);
-with sliding it falls much less than Wilson & Sheu's (1983) and Gupta et al.'s (1992, as Zhu & Cheng) factors
-say (L_m = 0.21, S = 1: 0.907 here, 0.775 and 0.544 there; those two disagree with each other by 1.4x). No
-published full TEHL line-contact solution with its complete input data was available to compare with
-(searched: Sadeghi & Sui 1990, Kim & Sadeghi 1992, Ghosh & Hamrock 1985, Hsiao & Hamrock 1992 — abstracts
-only). A first, cheaper energy model — one mean temperature per node with a quadratic profile across the film,
-convected with the net flux — gave 0.923 for pure rolling at L_m = 0.21 (layered: 0.946) and had no more
-sliding sensitivity; it was dropped for the layered one, which resolves the inlet's reverse flow.
+Validation (tests): in the isothermal Newtonian limit phi = 1 and the solution is the isothermal solver's, node for
+node. The film energy and viscosity profile reproduce Nahme's closed form of a heated Couette film (peak 4e-6, heat
+4e-5 off; the uniform viscosity: 6 % and 4 %). The thermal film reduction of pure rolling lies 5-11 % above the inlet
+shear-heating factor of Murch & Wilson (1975) over thermal loadings L_m = 0.2-3.4 (the reduction 1 - phi_T itself is
+49-80 % of theirs; with the viscosity uniform at the film's mean temperature, 4-6 % above and 60-90 %: the cool walls
+carry the inlet's Poiseuille flow); with sliding it falls less than Wilson & Sheu's (1983) and Gupta et al.'s (1992,
+as Zhu & Cheng) factors say (L_m = 0.21, S = 1: 0.874 here, 0.775 and 0.544 there, which disagree with each other by
+1.4x), though its reduction grows with sliding as Gupta's does (2.9x the rolling one at S = 1; Gupta: 2.3x). No
+published full TEHL line-contact solution with its complete input data was available to compare with (searched:
+Sadeghi & Sui 1990, Kim & Sadeghi 1992, Ghosh & Hamrock 1985, Hsiao & Hamrock 1992 — abstracts only). A first, cheaper
+energy model — one mean temperature per node with a quadratic profile across the film, convected with the net flux —
+gave 0.923 for pure rolling at L_m = 0.21 (layered, uniform viscosity: 0.946) and had no more sliding sensitivity; it
+was dropped for the layered one, which resolves the inlet's reverse flow.
 
 References: Conry, T.F., Wang, S. & Cusano, C. (1987) A Reynolds–Eyring equation for elastohydrodynamic
 lubrication in line contacts, ASME J. Tribol. 109:648–658. Jaeger, J.C. (1942) Moving sources of heat and
@@ -68,6 +78,7 @@ Numer. Anal. 49:1715–1735. Murch & Wilson (1975), Wilson & Sheu (1983): :mod:`
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 import warnings
@@ -203,6 +214,9 @@ class ThermalLineSolution:
     shear_stress: np.ndarray = attrs.field(repr=False, eq=False)  #: mid-plane tau_m, sign of u2 - u1 [Pa]
     heat: np.ndarray = attrs.field(repr=False, eq=False)  #: dissipation per unit area [W/m^2]
     flow_factor: np.ndarray = attrs.field(repr=False, eq=False)  #: phi of the last march [-]
+    #: nodes whose viscosity profile across the film reached the bound beta |T - T_mean| = PROFILE_BOUND of
+    #: :mod:`camcontact.ehl._thermal_kernels` (a film sheared into bands the nine film points do not resolve) [bool]
+    profile_bounded: np.ndarray = attrs.field(repr=False, eq=False)
     wet: np.ndarray = attrs.field(repr=False, eq=False)  #: nodes inlet .. last pressurised + 1 [bool]
     record: ConvergenceRecord  #: the fixed-point iteration (residuals: mean |d ln phi| over the wet nodes)
 
@@ -277,6 +291,7 @@ class ThermalLineSolution:
             "rolling force [N/m]": self.rolling_force, "max film temperature rise [K]": self.max_temperature_rise,
             "max surface temperature rise 1 [K]": self.max_surface_temperature_rise[0],
             "max surface temperature rise 2 [K]": self.max_surface_temperature_rise[1],
+            "profile bounded nodes [-]": int(np.count_nonzero(self.profile_bounded & self.wet)),
             "iterations [-]": self.record.cycles, "converged": self.record.converged,
             "wall time [s]": self.record.wall_time,
         }
@@ -351,11 +366,34 @@ def _collocation(points: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.nd
     return zeta, Dz, Dz @ Dz, 0.5 * weights
 
 
+@functools.lru_cache(maxsize=4)
+def _film_points(points: int) -> tuple[np.ndarray, ...]:
+    """(zeta, D, D2, weights, integral) of :func:`_collocation` and :func:`_antiderivative_matrix` (read-only)."""
+    arrays = (*_collocation(points), _antiderivative_matrix(_collocation(points)[0]))
+    for array in arrays:
+        array.flags.writeable = False
+    return arrays
+
+
+def _antiderivative_matrix(zeta: np.ndarray) -> np.ndarray:
+    """Q with (Q f)_j = int_0^zeta_j p_f: the antiderivative, at the film points ``zeta`` on [0, 1], of the polynomial
+    p_f interpolating f there (exact for polynomials of degree < len(zeta))."""
+    N = zeta.size - 1
+    Q = np.empty((N + 1, N + 1))
+    for c in range(N + 1):
+        unit = np.zeros(N + 1)
+        unit[c] = 1.0
+        p = np.polynomial.Chebyshev.fit(zeta, unit, N, domain=[0.0, 1.0])
+        Q[:, c] = p.integ(lbnd=0.0)(zeta)
+    return Q
+
+
 def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: bool, tau0: float, state: dict,
-            kernels: dict, scales: dict | None = None) -> dict:
+            kernels: dict, scales: dict | None = None, cross_film: bool = True) -> dict:
     """Temperature, stress and flow-factor fields of ``solution`` from the layered energy model (sweeps warm-started
     from ``state``, which keeps the temperatures between iterations); ``scales`` (b, p_h, h_scale of the solution's
-    X, P, H; default: the contact's Hertz scales)."""
+    X, P, H; default: the contact's Hertz scales); ``cross_film``: the viscosity varies across the film with its
+    temperature (Yang & Wen's generalised Reynolds terms), else uniform at the film's mean temperature."""
     problem = solution.problem
     scales = scales or problem.scales(contact.R, contact.w, contact.E_reduced)
     b, p_h, h_scale = scales["b"], scales["p_h"], scales["h_scale"]
@@ -372,9 +410,8 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
     last = int(pressurised[-1]) + 1 if pressurised.size else n - 1
     wet = np.arange(n) <= min(last, n - 1)
     du = contact.u2 - contact.u1
-    Tm = np.zeros(n)
-    T1 = np.zeros(n)
-    T2 = np.zeros(n)
+    zeta, D, D2, weights, integral = _film_points(LAYER_POINTS)
+    profile = np.zeros((n, LAYER_POINTS))
     failed = 0
     unsettled = False
     if thermal:
@@ -383,7 +420,6 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
             stride *= 2
         coarse = slice(None, None, stride)
         Xe = X[coarse]
-        zeta, D, D2, weights = _collocation(LAYER_POINTS)
         if state.get("T") is None or state["T"].shape[0] != Xe.size:
             state.update(T=np.zeros((Xe.size, LAYER_POINTS)), q1=np.zeros(Xe.size), q2=np.zeros(Xe.size))
         T, q1, q2 = state["T"], state["q1"], state["q2"]
@@ -393,7 +429,8 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
         args = (dx, np.ascontiguousarray(h[coarse]), np.ascontiguousarray(eta_iso[coarse]),
                 np.ascontiguousarray(flux[coarse]), np.ascontiguousarray(limit[coarse]), contact.u1, du, tau0,
                 contact.beta, contact.conductivity,
-                contact.heat_capacity, C1, C2, zeta, D, D2, weights, T, q1, q2, NODE_TOLERANCE, NODE_ITERATIONS)
+                contact.heat_capacity, C1, C2, zeta, D, D2, weights, integral, T, q1, q2, NODE_TOLERANCE,
+                NODE_ITERATIONS, bool(cross_film))
         for _ in range(LAYER_SWEEPS):
             down, bad_down = kernels["layer_sweep"](1, *args)
             up, bad_up = kernels["layer_sweep"](-1, *args)
@@ -407,19 +444,23 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
         elif change > LAYER_TOLERANCE:
             unsettled = True
             failure = f"energy sweeps: {LAYER_SWEEPS} sweep pairs left a change of {change:.3g} K"
-        Tm = np.interp(X, Xe, T @ weights)
-        T1 = np.interp(X, Xe, T[:, 0])
-        T2 = np.interp(X, Xe, T[:, -1])
+        profile = np.column_stack([np.interp(X, Xe, T[:, j]) for j in range(LAYER_POINTS)])
     beta = contact.beta if thermal else 0.0
-    tau, phi, Q = np.empty(n), np.empty(n), np.empty(n)
-    kernels["film_fields"](eta_iso * np.exp(-beta * Tm), h, flux, limit, du, tau0, tau, phi, Q)
-    # the solver's parameters of the flow factor F = a sqrt(1 + (k eta-bar)^2): a = exp(beta dT), and the Eyring
-    # coefficient k = eta0 exp(-beta dT) |u2 - u1|/(tau0 h) of Lambda = k eta-bar (0: Newtonian)
-    a = np.exp(beta * Tm)
-    k = (contact.eta0 / a * abs(du) / (tau0 * np.maximum(h, 1e-300)) if tau0 > 0.0 and du != 0.0
+    tau, phi, Q, a, total, m = (np.empty(n) for _ in range(6))
+    kernels["film_fields"](eta_iso, h, flux, limit, du, tau0, beta, profile, bool(cross_film), zeta, integral, weights,
+                           tau, phi, Q, a, total, m)
+    # the solver's factors: F = a sqrt(1 + (k eta-bar)^2) on the Poiseuille coefficient, a = -12 C_P of the viscosity
+    # profile (exp(beta dT) for a uniform one), the Eyring coefficient k = eta0 |u2 - u1|/(tau0 h F0(1)) of
+    # Lambda = k eta-bar at the Couette (harmonic-mean) viscosity (0: Newtonian), and the Couette factor
+    # c = (u1 + (u2 - u1) m)/u_m on the wedge (1 in pure rolling and for a uniform viscosity)
+    k = (contact.eta0 * abs(du) / (tau0 * total * np.maximum(h, 1e-300)) if tau0 > 0.0 and du != 0.0
          else np.zeros(n))
-    return {"Tm": Tm, "T1": T1, "T2": T2, "tau": tau, "phi": phi * a, "used": used, "a": a, "k": k, "Q": Q, "x": X * b,
-            "p": P * p_h, "h": h, "wet": wet, "failed": failed, "unsettled": unsettled,
+    c = (contact.u1 + du * m) / contact.u_m if cross_film else np.ones(n)
+    spread = beta * np.abs(profile - (profile @ weights)[:, None]).max(axis=1)
+    bounded = spread > _thermal_kernels.PROFILE_BOUND if cross_film else np.zeros(n, dtype=bool)
+    return {"Tm": profile @ weights, "T1": profile[:, 0], "T2": profile[:, -1], "tau": tau, "phi": phi * a,
+            "used": used, "a": a, "k": k, "c": c, "Q": Q, "x": X * b, "p": P * p_h, "h": h, "wet": wet,
+            "bounded": bounded, "failed": failed, "unsettled": unsettled,
             "failure": failure if failed or unsettled else ""}
 
 
@@ -434,6 +475,7 @@ def solve_thermal(
     output_tolerance: float = 1e-4,
     relaxation: float = 0.8,
     max_iterations: int = 40,
+    cross_film: bool = True,
     strict: bool = False,
     compiled: bool = True,
 ) -> ThermalLineSolution:
@@ -452,16 +494,20 @@ def solve_thermal(
     tolerance : float
         Tolerance of each multigrid solve (:func:`solve_multigrid`).
     flow_tolerance, output_tolerance : float
-        Stop when the mean of |ln F_new - ln F| over the wet nodes (F the flow factors at the current pressure) is
-        below ``flow_tolerance`` and either its largest value is too, or H_c, H_min and the traction force changed
-        by less than ``output_tolerance`` (relative) from the previous iteration. (The largest change stays at a
-        few nodes of the outlet constriction, where the film moves from iteration to iteration: measured 0.003-0.04
-        when the films and the traction have settled to 1e-4.)
+        Stop when the mean of |ln F_new - ln F| + |ln c_new - ln c| over the wet nodes (F the flow factors at the
+        current pressure, c the Couette factors) is below ``flow_tolerance`` and either its largest value is too, or
+        H_c, H_min and the traction force changed by less than ``output_tolerance`` (relative) from the previous
+        iteration. (The largest change stays at a few nodes of the outlet constriction, where the film moves from
+        iteration to iteration: measured 0.003-0.04 when the films and the traction have settled to 1e-4.)
     relaxation : float
-        Mixing parameter of the Anderson iteration on (ln a, ln k) (the plain relaxation of its first step and of
-        the shortened steps after a failed solve), in (0, 1].
+        Mixing parameter of the Anderson iteration on (ln a, ln k, ln c) (the plain relaxation of its first step and
+        of the shortened steps after a failed solve), in (0, 1].
     max_iterations : int
         Fixed-point iterations at most per level (each one multigrid solve and one energy solve).
+    cross_film : bool
+        The viscosity varies across the film with its temperature, and the Reynolds equation is Yang & Wen's
+        generalised one (default). False: the viscosity is uniform across the film at its mean temperature (the
+        model of camcontact before 2026-11-28, kept to show what the cross-film terms change).
     strict : bool
         Raise ConvergenceError instead of warning when not converged.
     compiled : bool
@@ -494,7 +540,9 @@ def solve_thermal(
     else:
         solution = solve_multigrid(problem, stages[0], tolerance=tolerance, strict=strict, compiled=compiled)
     eyring = non_newtonian and contact.u1 != contact.u2  # a sheared Eyring film: its flow factor has k > 0
-    x = None  # the iteration's variables: ln a (and ln k) per node
+    # a heated film in sliding: its viscosity profile shifts the entrainment flux (Couette factor c != 1)
+    couette = bool(cross_film and thermal and contact.beta > 0.0 and contact.u1 != contact.u2)
+    x = None  # the iteration's variables: ln a (, ln k) (, ln c) per node
     changes: list[float] = []
     loads: list[float] = []
     works: list[float] = []
@@ -504,19 +552,22 @@ def solve_thermal(
     stalled = None
 
     def variables(fields) -> np.ndarray:
-        """ln a (and ln k) per node of the fields' flow-factor parameters."""
-        parts = [np.log(fields["a"])] + ([np.log(np.maximum(fields["k"], 1e-300))] if eyring else [])
+        """ln a (, ln k) (, ln c) per node of the fields' flow and Couette factors."""
+        parts = ([np.log(fields["a"])] + ([np.log(np.maximum(fields["k"], 1e-300))] if eyring else [])
+                 + ([np.log(fields["c"])] if couette else []))
         return np.concatenate(parts)
 
     def solve(level, x, initial):
-        """(solution, work, failure) of the multigrid solve with the flow-factor parameters of ``x``."""
+        """(solution, work, failure) of the multigrid solve with the flow and Couette factors of ``x``."""
         n = problem.grid(level).size
+        parts = iter(np.exp(np.split(x, len(x) // n)))
+        factors = {"flow_factor": next(parts), "eyring": next(parts) if eyring else None,
+                   "couette": next(parts) if couette else None}
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", ConvergenceWarning)
-                attempt = solve_multigrid(problem, level, tolerance=tolerance, initial=initial,
-                                          flow_factor=np.exp(x[:n]), eyring=np.exp(x[n:]) if eyring else None,
-                                          compiled=compiled)
+                attempt = solve_multigrid(problem, level, tolerance=tolerance, initial=initial, compiled=compiled,
+                                          **factors)
         except ConvergenceError as exc:
             return None, 0.0, str(exc)
         cost = attempt.record.work_units[-1] if attempt.record.work_units else 0.0
@@ -538,14 +589,17 @@ def solve_thermal(
         history: list = []
         first = len(changes)
         for _ in range(max_iterations):
-            fields = _layers(contact, solution, thermal, tau0, state, kernels)
+            fields = _layers(contact, solution, thermal, tau0, state, kernels, cross_film=cross_film)
             target = variables(fields)
             if x is None:  # the isothermal start: the Eyring coefficients of its film to begin with
                 x = target.copy()
                 x[:solution.X.size] = 0.0
+                if couette:
+                    x[-solution.X.size:] = 0.0
             wet = fields["wet"]
-            # the flow factor the film wants against the one its solution was solved with, at its pressure
-            difference = np.abs(np.log(fields["phi"][wet]) - np.log(fields["used"][wet]))
+            # the flow and Couette factors the film wants against those its solution was solved with, at its pressure
+            difference = (np.abs(np.log(fields["phi"][wet]) - np.log(fields["used"][wet]))
+                          + np.abs(np.log(fields["c"][wet]) - np.log(solution.couette_factor[wet])))
             change, largest = float(np.mean(difference)), float(np.max(difference))
             changes.append(change)
             watched = np.array([solution.H_c, solution.H_min,
@@ -591,7 +645,9 @@ def solve_thermal(
                f"(tolerance {flow_tolerance:g}; films and traction settled to {output_tolerance:g}: {settled})"
                + (f"; {halvings} steps halved" if halvings else "")
                + (f"; stopped: {stalled}" if stalled else "")
-               + (f"; {fields['failure']}" if fields["failure"] else ""))
+               + (f"; {fields['failure']}" if fields["failure"] else "")
+               + (f"; viscosity profile bounded at {np.count_nonzero(fields['bounded'] & fields['wet'])} wet nodes"
+                  if np.any(fields["bounded"] & fields["wet"]) else ""))
     converged = converged and not fields["failed"] and solution.record.converged
     record = _record(changes, loads, works, start, converged, message, levels, solution)
     if not converged:
@@ -603,7 +659,8 @@ def solve_thermal(
         contact=contact, thermal=bool(thermal), rheology="eyring" if non_newtonian else "newtonian", ehl=solution,
         isothermal=isothermal, x=fields["x"], p=fields["p"], h=fields["h"], temperature_rise=fields["Tm"],
         surface_temperature_rise_1=fields["T1"], surface_temperature_rise_2=fields["T2"],
-        shear_stress=fields["tau"], heat=fields["Q"], flow_factor=fields["phi"], wet=fields["wet"], record=record)
+        shear_stress=fields["tau"], heat=fields["Q"], flow_factor=fields["phi"], wet=fields["wet"],
+        profile_bounded=fields["bounded"], record=record)
 
 
 def _anderson(history: list, x: np.ndarray, residual: np.ndarray, mixing: float) -> np.ndarray:
@@ -655,7 +712,8 @@ class ThermalTransientResult:
 
 def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact, levels: int = 8,
                             thermal: bool = True, non_newtonian: bool | None = None, tolerance: float = 1e-6,
-                            strict: bool = False, compiled: bool = True, **options) -> ThermalTransientResult:
+                            cross_film: bool = True, strict: bool = False, compiled: bool = True,
+                            **options) -> ThermalTransientResult:
     """The transient line contact (:func:`camcontact.ehl.line_transient.transient_cycle`, squeeze term, BDF2) with
     the thermal and non-Newtonian film of this module, coupled step by step.
 
@@ -677,8 +735,9 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
         The lubricant's, the surfaces' and the rheology's data (its own R, w, u1, u2 are not used).
     levels, tolerance, strict, compiled, options
         As :func:`transient_cycle` (``options``: its further keywords).
-    thermal, non_newtonian : bool
-        As :func:`solve_thermal`.
+    thermal, non_newtonian, cross_film : bool
+        As :func:`solve_thermal`; with ``cross_film`` the march takes the Poiseuille factors of the film's viscosity
+        profile, while its Couette factor stays 1 (the transient kernels' squeeze content would take it too).
     """
     from .line_transient import transient_cycle
 
@@ -716,7 +775,7 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
         snapshot = LineEHLSolution(problem=solver.problem, level=solver.levels, X=solver.X, P=solver.P, H=H,
                                    H0=solver.H0, record=None, flow_factor=flow)
         fields = _layers(here, snapshot, thermal, tau0, state, kernels,
-                         scales={"b": sc.b, "p_h": sc.p_h, "h_scale": sc.h_scale})
+                         scales={"b": sc.b, "p_h": sc.p_h, "h_scale": sc.h_scale}, cross_film=cross_film)
         wet = fields["wet"]
         out["rise"][i] = float(fields["Tm"][wet].max())
         out["surface"][i] = float(max(fields["T1"][wet].max(), fields["T2"][wet].max()))

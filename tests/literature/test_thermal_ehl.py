@@ -2,11 +2,12 @@
 shear-heating factors (camcontact.models.film_thermal) and against the lumped traction model of the same rheology
 (camcontact.contact.fluid_traction).
 
-No published full thermal EHL line-contact solution with its complete input data was available (Sadeghi & Sui
-1990, Kim & Sadeghi 1992, Ghosh & Hamrock 1985, Hsiao & Hamrock 1992: abstracts only), so the checks are the
-formula factors in their range and the lumped model. The contact: steel rollers, R = 10 mm, 200 kN/m
-(p_h = 0.85 GPa), mineral oil eta0 = 0.04 Pa s, alpha = 20/GPa, beta = 0.03/K, k = 0.14 W/(m K),
-rho c = 1.74 MJ/(m^3 K); steel effusivity 12.9 kW s^0.5/(m^2 K)."""
+No published full thermal EHL line-contact solution with its complete input data was available (Sadeghi & Sui 1990,
+Kim & Sadeghi 1992, Ghosh & Hamrock 1985, Hsiao & Hamrock 1992: abstracts only), so the checks are the formula factors
+in their range and the lumped model. The solver's own pieces are checked against closed forms in
+tests/unit/test_line_thermal.py (Nahme's heated Couette film among them). The contact: steel rollers, R = 10 mm, 200
+kN/m (p_h = 0.85 GPa), mineral oil eta0 = 0.04 Pa s, alpha = 20/GPa, beta = 0.03/K, k = 0.14 W/(m K), rho c = 1.74
+MJ/(m^3 K); steel effusivity 12.9 kW s^0.5/(m^2 K)."""
 
 from __future__ import annotations
 
@@ -33,35 +34,58 @@ def _factor(method, contact):
                              p_h=p_h, E_reduced=contact.E_reduced)
 
 
-@pytest.mark.parametrize("u_m, measured", [(5.0, 0.946), (10.0, 0.853), (20.0, 0.684)])
-def test_pure_rolling_film_reduction_follows_murch_wilson(u_m, measured):
+@pytest.mark.parametrize("u_m, measured, uniform", [(5.0, 0.957, 0.946), (10.0, 0.879, 0.853), (20.0, 0.718, 0.684)])
+def test_pure_rolling_film_reduction_follows_murch_wilson(u_m, measured, uniform):
     """Pure rolling over thermal loadings L_m = beta eta0 u_m^2/k = 0.21, 0.86, 3.4: the numerical h_c/h_c,iso is
-    within 4-6 % of Murch & Wilson's (1975) 1/(1 + 0.254 L_m^0.62) (measured 1.038, 1.050, 1.056) and falls with
-    L_m as theirs does; the reduction 1 - phi is 60-90 % of theirs (the solver's simplifications: uniform
-    viscosity across the film, no compression heating)."""
+    5-11 % above Murch & Wilson's (1975) 1/(1 + 0.254 L_m^0.62) (measured 1.050, 1.082, 1.110) and falls with L_m as
+    theirs does; the reduction 1 - phi is 49-80 % of theirs. With the viscosity uniform across the film at its mean
+    temperature (cross_film=False, the solver's model before the generalised Reynolds terms) the film is thinner,
+    0.946, 0.853, 0.684 (within 4-6 % of theirs): in the inlet the walls stay cool and the hot mid-film carries
+    little of the Poiseuille (back)flow, so the film's Poiseuille coefficient is that of a cooler, more viscous film
+    than its mean temperature's (measured -12 C_P = 0.75-0.85 of exp(beta T_mean) in the inlet at L_m = 3.4)."""
     contact = _contact(u_m, 0.0)
     solution = solve_thermal(contact, LEVEL)
     L_m, murch_wilson = _factor("murch_wilson", contact)
-    assert solution.record.converged
+    assert solution.record.converged and not solution.profile_bounded.any()
     assert solution.film_reduction == pytest.approx(measured, abs=2e-3)
-    assert 1.0 < solution.film_reduction / murch_wilson < 1.07
+    assert 1.0 < solution.film_reduction / murch_wilson < 1.12
     _, wilson_sheu = _factor("wilson_sheu", contact)
-    assert solution.film_reduction / wilson_sheu < 1.06
+    assert solution.film_reduction / wilson_sheu < 1.12
+    assert solve_thermal(contact, LEVEL, cross_film=False).film_reduction == pytest.approx(uniform, abs=2e-3)
+    assert np.all(solution.ehl.couette_factor == 1.0)  # in pure rolling the entrainment is u_m whatever the profile
 
 
-def test_sliding_reduces_the_film_far_less_than_the_sliding_factors_say():
-    """With sliding (L_m = 0.21) the numerical film falls from 0.946 (S = 0) to 0.907 (S = 1) of the isothermal
-    one. Wilson & Sheu (1983) say 0.544 and Gupta et al. (1992, as Zhu & Cheng) 0.775 at S = 1: they disagree with
-    each other by 1.4x and both with this solver, whose inlet Couette heating at S = 1 warms the inlet by a few
-    kelvin only (its film points resolve the inlet's reverse flow; the viscosity is uniform across the film).
-    The disagreement is stated, not hidden: the formula factors stay available (film effect ``thermal``)."""
-    reductions = {S: solve_thermal(_contact(5.0, S), LEVEL).film_reduction for S in (0.0, 0.5, 1.0)}
-    assert reductions[0.0] > reductions[0.5] > reductions[1.0]
-    assert reductions[1.0] == pytest.approx(0.907, abs=3e-3)
+def test_a_longer_inlet_keeps_more_of_the_heated_backflow():
+    """The inlet's reverse flow carries heated oil upstream; with the domain's inlet at -4 b it leaves the domain
+    there, at -16 b it turns back into the contact: L_m = 0.86, h_c/h_c,iso 0.879 (-4 b) against 0.863 (-16 b,
+    measured; level 8 for the same spacing), the reduction 13 % larger, nearer Murch & Wilson's 0.812."""
+    near = solve_thermal(_contact(10.0, 0.0), LEVEL)
+    far = solve_thermal(_contact(10.0, 0.0, domain=(-16.0, 1.5)), LEVEL + 2)
+    assert far.film_reduction == pytest.approx(0.863, abs=2e-3)
+    assert far.film_reduction < near.film_reduction - 0.01
+
+
+def test_sliding_reduces_the_film_less_than_the_sliding_factors_say():
+    """With sliding (L_m = 0.21) the numerical film falls from 0.957 (S = 0) to 0.940 (S = 0.5) and 0.874 (S = 1) of
+    the isothermal one (Newtonian; an Eyring film, tau0 5 MPa: 0.944 and 0.886). Gupta et al. (1992, as Zhu &
+    Cheng) give 0.900, 0.824, 0.775 and Wilson & Sheu (1983) 0.544 at S = 1: they disagree with each other by 1.4x
+    and both with this solver. The solver's reduction at S = 1 is 2.9x its rolling one (Gupta's: 2.3x), most of
+    it from the Hertz zone: there the hot film's viscosity profile shifts the entrainment (Couette factor
+    0.985-1.08) and the Newtonian film, sheared far beyond any oil's Eyring stress (236 K), reaches the bound of
+    its profile (PROFILE_BOUND) at 120 nodes, which the record says. The formula factors stay available (film
+    effect ``thermal``)."""
+    reductions = {S: solve_thermal(_contact(5.0, S), LEVEL) for S in (0.0, 0.5, 1.0)}
+    films = {S: solution.film_reduction for S, solution in reductions.items()}
+    assert films[0.0] > films[0.5] > films[1.0]
+    assert films[0.5] == pytest.approx(0.940, abs=3e-3) and films[1.0] == pytest.approx(0.874, abs=3e-3)
+    assert reductions[1.0].profile_bounded.any() and "profile bounded" in reductions[1.0].record.message
+    eyring = solve_thermal(_contact(5.0, 1.0, eyring_stress=5e6), LEVEL).film_reduction
+    assert eyring == pytest.approx(0.886, abs=3e-3)
     _, gupta = _factor("zhu_cheng", _contact(5.0, 1.0))
     _, wilson_sheu = _factor("wilson_sheu", _contact(5.0, 1.0))
     assert gupta == pytest.approx(0.775, abs=1e-3) and wilson_sheu == pytest.approx(0.544, abs=1e-3)
-    assert reductions[1.0] > gupta > wilson_sheu
+    assert films[1.0] > gupta > wilson_sheu
+    assert 2.0 < (1.0 - films[1.0]) / (1.0 - films[0.0]) < 3.5
 
 
 @pytest.mark.parametrize("S", [0.1, 0.5, 1.0])
@@ -80,11 +104,14 @@ def test_isothermal_eyring_traction_is_the_lumped_models_on_the_same_film(S):
     assert solution.traction_coefficient == pytest.approx(float(lumped.coefficient), rel=1e-3)
 
 
-@pytest.mark.parametrize("S, measured, lumped_value", [(0.5, 0.0358, 0.0379), (1.0, 0.0332, 0.0353)])
-def test_thermal_eyring_traction_is_close_to_the_lumped_thermal_model(S, measured, lumped_value):
-    """With the energy equation the numerical traction is 5-7 % below the lumped thermal Eyring model (one
+@pytest.mark.parametrize("S, measured, lumped_value", [(0.5, 0.0338, 0.0379), (1.0, 0.0291, 0.0353)])
+def test_thermal_eyring_traction_is_below_the_lumped_thermal_model(S, measured, lumped_value):
+    """With the energy equation the numerical traction is 11-18 % below the lumped thermal Eyring model (one
     contact temperature from a flash temperature and the film's mean rise, on the Hertz pressure): S = 0.5:
-    0.0358 vs 0.0379, S = 1: 0.0332 vs 0.0353 (measured). Both fall below the isothermal values (0.0446, 0.0498)."""
+    0.0338 vs 0.0379, S = 1: 0.0291 vs 0.0353 (measured). The film's shear concentrates in its hot mid-layer, whose
+    low viscosity one mean temperature does not see (the Couette stress follows the harmonic mean of the viscosity
+    across the film): with the viscosity uniform at the mean temperature (cross_film=False) the traction is 0.0358
+    and 0.0332, 5-7 % below the lumped model. Both fall below the isothermal values (0.0446, 0.0498)."""
     contact = _contact(5.0, S, eyring_stress=5e6)
     solution = solve_thermal(contact, LEVEL)
     problem = contact.problem()
@@ -95,4 +122,6 @@ def test_thermal_eyring_traction_is_close_to_the_lumped_thermal_model(S, measure
                             half_width=scales["b"], thermal=TractionThermal(0.14, 0.03, 12900.0, 12900.0))
     assert solution.traction_coefficient == pytest.approx(measured, rel=1e-2)
     assert float(lumped.coefficient) == pytest.approx(lumped_value, rel=1e-2)
-    assert 0.9 < solution.traction_coefficient / float(lumped.coefficient) < 1.0
+    assert 0.8 < solution.traction_coefficient / float(lumped.coefficient) < 0.92
+    uniform = solve_thermal(contact, LEVEL, cross_film=False)
+    assert 0.92 < uniform.traction_coefficient / float(lumped.coefficient) < 0.96
