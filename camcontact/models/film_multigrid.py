@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 import attrs
+import numpy as np
 
 from ..ehl.film_formulas import moes_line_film
 from ..errors import InputError
@@ -167,6 +168,20 @@ class Multigrid(FilmModel):
                                             viscosity=viscosity, density=density, p0=p0, elastic=self.elasticity)
         domain = self.domain if self.domain is not None else automatic_domain(first.M, first.L, self.elasticity)
         return attrs.evolve(first, domain=tuple(domain), cavitation=self.cavitation)
+
+    def check_validity(self, values) -> list[str]:
+        """The range messages of :class:`FilmModel`, and where the thermal solver's film viscosity profile reached
+        its bound (:attr:`camcontact.ehl.line_thermal.ThermalLineSolution.profile_bounded`): shear bands the film
+        points do not resolve, so that film and traction depend on the bound."""
+        messages = super().check_validity(values)
+        solution = values.get("ehl_solution")
+        bounded = getattr(solution, "profile_bounded", None)
+        count = 0 if bounded is None else int(np.count_nonzero(bounded & solution.wet))
+        if count:
+            messages.append(f"the film's viscosity profile reached its bound at {count} nodes (a film sheared into "
+                            "bands the solver's nine film points do not resolve; its film and traction depend on "
+                            "camcontact.ehl._thermal_kernels.PROFILE_BOUND)")
+        return messages
 
     def evaluate(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson",
                  initial=None, oil_layer=None, u1=None, u2=None, effusivity=None, before=None):

@@ -47,12 +47,12 @@ def test_multigrid_with_thermal_and_non_newtonian_runs_the_thermal_solver(contac
     assert result["film_validity"] == "ok"
     assert h_c == solution.h_c and h_iso == pytest.approx(solution.isothermal.H_c * solution.scales["h_scale"])
     assert float(result["thermal_factor"]) == pytest.approx(h_c / h_iso, rel=1e-12)
-    assert 0.85 < h_c / h_iso < 0.97  # measured 0.923 (level 9); the formula factor says 0.616 here
+    assert 0.85 < h_c / h_iso < 0.97  # measured 0.930 (levels 7 and 9); the formula factor says 0.616 here
     # the friction takes the solver's own traction and film temperature, not the lumped model's
     assert float(result["traction_coefficient"]) == pytest.approx(solution.traction_coefficient, rel=1e-12)
     assert float(result["traction_temperature_rise"]) == pytest.approx(solution.max_temperature_rise, rel=1e-12)
     lumped = _run(contact, {"thermal", "non_newtonian"}, film="pan_hamrock")
-    assert 0.025 < float(result["traction_coefficient"]) < float(lumped["traction_coefficient"])  # 0.033 < 0.041
+    assert 0.025 < float(result["traction_coefficient"]) < float(lumped["traction_coefficient"])  # 0.031 < 0.041
 
 
 def test_isothermal_eyring_film_keeps_the_film_and_matches_the_lumped_traction(contact):
@@ -100,10 +100,15 @@ def test_missing_thermal_data_is_named(contact):
 
 def test_thermal_alone_solves_a_newtonian_film_bounded_by_the_limiting_shear_stress(contact):
     """thermal without non_newtonian: a Newtonian film with the energy equation, its heat bounded by the scene's
-    limiting shear stress (0.047 p, the traction models' default), films and numerical factor from the solver."""
-    result = _run(contact, {"thermal"}, outputs=["h_c", "h_c_isothermal", "thermal_factor", "film_solution"])
+    limiting shear stress (0.047 p, the traction models' default), films and numerical factor from the solver. The
+    Newtonian film in the Hertz zone shears into bands: its viscosity profile reaches the solver's bound (188 nodes
+    at level 7, measured), and the film's validity says so (film_valid False); the Eyring film does not."""
+    result = _run(contact, {"thermal"}, outputs=["h_c", "h_c_isothermal", "thermal_factor", "film_solution",
+                                                 "film_validity", "film_valid"])
     solution = result["film_solution"]
     assert solution.rheology == "newtonian" and solution.thermal
     assert solution.contact.limiting_shear_slope == pytest.approx(0.047)
     assert float(result["thermal_factor"]) == pytest.approx(float(result["h_c"]) / float(result["h_c_isothermal"]))
     assert 0.85 < float(result["thermal_factor"]) < 1.0
+    assert solution.profile_bounded.any() and not bool(result["film_valid"])
+    assert "viscosity profile reached its bound" in str(result["film_validity"])
