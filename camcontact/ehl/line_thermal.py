@@ -699,6 +699,9 @@ class ThermalTransientResult:
     traction_coefficient: np.ndarray = attrs.field(repr=False, eq=False)  #: int tau_m dx / w, sign of u1 - u2
     thermal: np.ndarray = attrs.field(repr=False, eq=False)  #: the energy equation ran at the instant [bool]
     energy_time: float  #: wall time spent on the energy equation [s]
+    #: wet nodes whose film viscosity profile reached its bound in the energy solve after the instant (its flow
+    #: factors are the next step's; :attr:`ThermalLineSolution.profile_bounded`) [-]
+    profile_bounded: np.ndarray = attrs.field(factory=lambda: np.zeros(0, dtype=int), repr=False, eq=False)
 
     def to_frame(self):
         """The march's frame (:meth:`TransientLineResult.to_frame`) with the thermal columns."""
@@ -707,6 +710,7 @@ class ThermalTransientResult:
         frame["max surface temperature rise [K]"] = self.surface_temperature_rise
         frame["traction coefficient [-]"] = self.traction_coefficient
         frame["thermal"] = self.thermal
+        frame["profile bounded nodes [-]"] = self.profile_bounded
         return frame
 
 
@@ -757,6 +761,7 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
     state: dict = {}
     out = {name: np.full(n, np.nan) for name in ("rise", "surface", "traction")}
     ran = np.zeros(n, dtype=bool)
+    bounded = np.zeros(n, dtype=int)
     clock = [0.0]
 
     def after_step(i, solver):
@@ -778,6 +783,7 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
                          scales={"b": sc.b, "p_h": sc.p_h, "h_scale": sc.h_scale}, cross_film=cross_film)
         wet = fields["wet"]
         out["rise"][i] = float(fields["Tm"][wet].max())
+        bounded[i] = int(np.count_nonzero(fields["bounded"] & wet))
         out["surface"][i] = float(max(fields["T1"][wet].max(), fields["T2"][wet].max()))
         out["traction"][i] = -_trapezoid(fields["tau"], fields["x"], wet) / series["w"][i]
         ran[i] = True
@@ -790,4 +796,5 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
     films = transient_cycle(times, series["w"], series["R"], u_m, levels=levels, tolerance=tolerance, strict=strict,
                             compiled=compiled, after_step=after_step, **(opts | options))
     return ThermalTransientResult(films=films, temperature_rise=out["rise"], surface_temperature_rise=out["surface"],
-                                  traction_coefficient=out["traction"], thermal=ran, energy_time=clock[0])
+                                  traction_coefficient=out["traction"], thermal=ran, energy_time=clock[0],
+                                  profile_bounded=bounded)

@@ -256,7 +256,9 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     ``film_temperature_rise`` [K]: the largest mean film temperature rise over the contact at each angle; NaN
     where the energy equation cannot run (a surface at rest or moving against the entrainment: a flat face on
     the base circle and around its reversal) and everywhere without ``thermal`` (an isothermal Eyring march);
-    ``film_thermal`` (bool) says where it ran.
+    ``film_thermal`` (bool) says where it ran. Where the flow factors an angle's film took came from a viscosity
+    profile that reached its bound (:attr:`camcontact.ehl.line_thermal.ThermalTransientResult.profile_bounded`),
+    ``film_valid`` is False and ``film_regime`` says why.
     The film of an angle takes the flow factors of the last angle's solution across the film, so the march's
     first angle (the steadiest one) and the angle after one without such a solution have an isothermal
     (Newtonian) film; ``film_regime`` says so."""
@@ -283,9 +285,11 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     films = result.films
     energy = np.asarray(result.thermal, dtype=bool)  # the energy equation ran after the instant's film
     heated = np.concatenate([[False], energy[:-1]])  # the instant's film took the last instant's flow factors
-    h_c, h_min, x_min, converged, energy, heated, rise = _in_order(
+    # ... and those of a viscosity profile that reached its bound (shear bands the film points do not resolve)
+    bounded = np.concatenate([[0], np.asarray(result.profile_bounded)[:-1]])
+    h_c, h_min, x_min, converged, energy, heated, rise, bounded = _in_order(
         order, films.h_c, films.h_min, films.x_min, np.asarray(films.converged, dtype=bool), energy, heated,
-        result.temperature_rise)
+        result.temperature_rise, bounded)
     messages = _in_order(order, np.array([record.message for record in films.records], dtype=object))[0]
     kind = "thermal" if film_model.thermal else "non-Newtonian"
     regime = np.empty(u.size, dtype=object)
@@ -293,8 +297,11 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
         note = (f"transient (squeeze, {kind})" if heated[i] else
                 f"transient (squeeze), {'isothermal' if film_model.thermal else 'Newtonian'} here: "
                 + ("the march's start" if i == first else "a surface did not move with the entrainment"))
+        if bounded[i]:
+            note += (f"; the film's viscosity profile reached its bound at {int(bounded[i])} nodes (its film depends "
+                     "on camcontact.ehl._thermal_kernels.PROFILE_BOUND)")
         regime[i] = note if converged[i] else f"{note}: not converged: {messages[i]}"
-    return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged,
+    return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged & (bounded == 0),
             "film_solutions": [None] * u.size, "x_min": x_min,
             "film_temperature_rise": np.where(energy & film_model.thermal, rise, np.nan),
             "film_thermal": energy & film_model.thermal}

@@ -116,6 +116,30 @@ def test_non_newtonian_squeeze_film_is_the_eyring_march(scene):
     assert np.all(np.isnan(np.asarray(eyring["film_temperature_rise"], dtype=float)))  # no energy equation
 
 
+def test_an_angle_whose_flow_factors_had_a_bounded_viscosity_profile_is_not_valid(scene, monkeypatch):
+    """Where the energy solve after an instant held the film's viscosity profile at its bound (shear bands the film
+    points do not resolve; neither LS-1 follower here reaches it, measured), the next instant's film took its flow
+    factors: that angle's film_valid is False and film_regime says why. The march's report is marked at one
+    instant here to see the step pass it on."""
+    from camcontact.ehl import line_thermal
+
+    real = line_thermal.thermal_transient_cycle
+
+    def marked(*args, **kwargs):
+        result = real(*args, **kwargs)
+        bounded = np.zeros(result.thermal.size, dtype=int)
+        bounded[10] = 7
+        return attrs.evolve(result, profile_bounded=bounded)
+
+    monkeypatch.setattr(line_thermal, "thermal_transient_cycle", marked)
+    result = cc.Analysis(scene, outputs=["film_valid", "film_regime"], models={"film": FILM},
+                         effects=BASE | {"thermal"}).run()
+    valid = np.asarray(result["film_valid"], dtype=bool)
+    regimes = np.asarray(result["film_regime"], dtype=str)
+    assert (~valid).sum() == 1
+    assert "viscosity profile reached its bound at 7 nodes" in regimes[~valid][0]
+
+
 def test_flat_follower_heats_only_where_both_surfaces_move_with_the_entrainment(scene):
     """A flat face is at rest on the base circle and moves against the entrainment around its reversal: the energy
     equation (both surfaces moving through the contact) runs only on the flanks, the film temperature rise is NaN

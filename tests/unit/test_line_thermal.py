@@ -344,8 +344,23 @@ def test_thermal_transient_at_constant_conditions_settles_on_the_steady_thermal_
         assert march.traction_coefficient[-1] == pytest.approx(steady.traction_coefficient, rel=1e-4)
         assert march.temperature_rise[-1] == pytest.approx(steady.max_temperature_rise, rel=5e-3)
         assert march.films.h_c[0] > march.films.h_c[-1]  # the isothermal start thins as the inlet heats
+        assert not march.profile_bounded.any()
         frame = march.to_frame()
         assert "max film temperature rise [K]" in frame and len(frame) == times.size
+
+
+def test_a_thermal_transient_reports_where_the_viscosity_profile_reached_its_bound():
+    """A Newtonian film at S = 1 (L_m = 0.21) heats its Hertz zone by 200-330 K and shears into bands there: the
+    energy solve after every step holds the profile at its bound at 113-127 wet nodes (measured; the steady solve:
+    120 at level 6), and the march says so per instant (profile_bounded, in its frame)."""
+    from camcontact.ehl.line_thermal import thermal_transient_cycle
+
+    contact = _contact(S=1.0)
+    times = np.arange(8) * 2e-5
+    march = thermal_transient_cycle(times, contact.w, contact.R, contact.u1, contact.u2, contact=contact,
+                                    levels=LEVEL)
+    assert np.all(march.profile_bounded > 50)
+    assert "profile bounded nodes [-]" in march.to_frame()
 
 
 def test_thermal_transient_without_heating_is_the_isothermal_march():
