@@ -46,8 +46,11 @@ Models (equations in :mod:`camcontact.ehl._thermal_kernels`):
   bands the nine points do not resolve: Newtonian heavy sliding, or an Eyring film far beyond its stress); the nodes
   where the bound holds the profile are reported (``profile_bounded``, the record's message), and their films depend
   on it (measured: a Newtonian film at S = 1.5, u_m 5 m/s, p_h 1.9 GPa, h_c/h_c,iso 0.69 with the bound 2 and not
-  converged, 0.82 with the bound 0.5). * **Simplifications (camcontact's, stated)**: the transient march keeps the
-  Couette factor at 1 (its squeeze content would take it too); density and heat capacity do not depend on temperature
+  converged, 0.82 with the bound 0.5). Where the iteration with the viscosity varying across the film does not
+  converge and the uniform one does (measured at level 7: 5 of 54 heavy-sliding contacts), :func:`solve_thermal`
+  returns the uniform one, with ``cross_film`` False and the record saying so.
+* **Simplifications (camcontact's, stated)**: the transient march keeps the Couette factor at 1 (its squeeze
+  content would take it too); density and heat capacity do not depend on temperature
   or pressure; no compression heating (alpha_T T u dp/dx) and no conduction along x; downstream of the film rupture
   the film is treated as full (it no longer affects the pressure); the inlet lubricant and both surfaces enter at T0.
   The energy equation runs on every 2^k-th node of the EHL grid (at most :data:`LAYER_NODES` nodes), its temperatures
@@ -219,6 +222,9 @@ class ThermalLineSolution:
     profile_bounded: np.ndarray = attrs.field(repr=False, eq=False)
     wet: np.ndarray = attrs.field(repr=False, eq=False)  #: nodes inlet .. last pressurised + 1 [bool]
     record: ConvergenceRecord  #: the fixed-point iteration (residuals: mean |d ln phi| over the wet nodes)
+    #: the viscosity varied across the film (False: uniform at its mean temperature, by request or where the
+    #: cross-film iteration did not converge and this one did; the record's message says which)
+    cross_film: bool = True
 
     @property
     def scales(self) -> dict:
@@ -507,7 +513,10 @@ def solve_thermal(
     cross_film : bool
         The viscosity varies across the film with its temperature, and the Reynolds equation is Yang & Wen's
         generalised one (default). False: the viscosity is uniform across the film at its mean temperature (the
-        model of camcontact before 2026-11-28, kept to show what the cross-film terms change).
+        model of camcontact before 2026-11-28, kept to show what the cross-film terms change). Where the cross-film
+        iteration does not converge (heavy sliding: the profile's feedback on the entrainment stalls it) and the
+        uniform one does, the uniform solution is returned, ``cross_film`` False on it and the record's message
+        saying so (:data:`UNIFORM_FALLBACK`).
     strict : bool
         Raise ConvergenceError instead of warning when not converged.
     compiled : bool
@@ -527,6 +536,43 @@ def solve_thermal(
             raise InputError(f"solve_thermal: {name} = {value!r}; allowed: > 0")
     if not (isinstance(max_iterations, int) and max_iterations >= 1):
         raise InputError(f"solve_thermal: max_iterations = {max_iterations!r}; allowed: an integer >= 1")
+    options = dict(thermal=thermal, non_newtonian=non_newtonian, tolerance=tolerance, flow_tolerance=flow_tolerance,
+                   output_tolerance=output_tolerance, relaxation=relaxation, max_iterations=max_iterations,
+                   strict=strict, compiled=compiled)
+    try:
+        result, failure = _iterate(contact, levels, cross_film=cross_film, **options), None
+    except ConvergenceError as exc:  # a non-finite flow factor
+        if not (cross_film and thermal):
+            raise
+        result, failure = None, exc
+    if cross_film and thermal and (result is None or not result.record.converged):
+        # the viscosity profile's feedback stalled (heavy sliding): the uniform-viscosity model, if it converges
+        uniform = _iterate(contact, levels, cross_film=False, **options)
+        if uniform.record.converged or result is None:
+            before = result.record if result is not None else failure.record
+            spent = before.wall_time if before is not None else 0.0
+            text = result.record.message if result is not None else str(failure)
+            record = attrs.evolve(uniform.record, wall_time=uniform.record.wall_time + spent,
+                                  message=f"{UNIFORM_FALLBACK} ({text}); {uniform.record.message}")
+            result = attrs.evolve(uniform, record=record)
+    if not result.record.converged:
+        text = f"thermal line EHL did not converge: {result.record.message}"
+        if strict:
+            raise ConvergenceError(text, result.record)
+        warnings.warn(text, ConvergenceWarning, stacklevel=2)
+    return result
+
+
+#: the record's message where :func:`solve_thermal` returns the uniform-viscosity solution
+UNIFORM_FALLBACK = ("the viscosity uniform across the film at its mean temperature (cross_film=False): the iteration "
+                    "with the viscosity varying across it did not converge")
+
+
+def _iterate(contact: ThermalLineContact, levels: int, *, thermal: bool, non_newtonian: bool, tolerance: float,
+             flow_tolerance: float, output_tolerance: float, relaxation: float, max_iterations: int,
+             cross_film: bool, strict: bool, compiled: bool) -> ThermalLineSolution:
+    """The fixed point of :func:`solve_thermal` with one viscosity model (``cross_film``), its inputs checked; the
+    solution carries its record, converged or not (no warning here)."""
     start = time.perf_counter()
     kernels = {name: _thermal_kernels.compiled(name) if compiled else _thermal_kernels.PY[name]
                for name in ("layer_sweep", "film_fields")}
@@ -650,17 +696,12 @@ def solve_thermal(
                   if np.any(fields["bounded"] & fields["wet"]) else ""))
     converged = converged and not fields["failed"] and solution.record.converged
     record = _record(changes, loads, works, start, converged, message, levels, solution)
-    if not converged:
-        text = f"thermal line EHL did not converge: {message}"
-        if strict:
-            raise ConvergenceError(text, record)
-        warnings.warn(text, ConvergenceWarning, stacklevel=2)
     return ThermalLineSolution(
         contact=contact, thermal=bool(thermal), rheology="eyring" if non_newtonian else "newtonian", ehl=solution,
         isothermal=isothermal, x=fields["x"], p=fields["p"], h=fields["h"], temperature_rise=fields["Tm"],
         surface_temperature_rise_1=fields["T1"], surface_temperature_rise_2=fields["T2"],
         shear_stress=fields["tau"], heat=fields["Q"], flow_factor=fields["phi"], wet=fields["wet"],
-        profile_bounded=fields["bounded"], record=record)
+        profile_bounded=fields["bounded"], record=record, cross_film=bool(cross_film))
 
 
 def _anderson(history: list, x: np.ndarray, residual: np.ndarray, mixing: float) -> np.ndarray:

@@ -170,9 +170,10 @@ class Multigrid(FilmModel):
         return attrs.evolve(first, domain=tuple(domain), cavitation=self.cavitation)
 
     def check_validity(self, values) -> list[str]:
-        """The range messages of :class:`FilmModel`, and where the thermal solver's film viscosity profile reached
-        its bound (:attr:`camcontact.ehl.line_thermal.ThermalLineSolution.profile_bounded`): shear bands the film
-        points do not resolve, so that film and traction depend on the bound."""
+        """The range messages of :class:`FilmModel`; where the thermal solver's film viscosity profile reached its
+        bound (:attr:`camcontact.ehl.line_thermal.ThermalLineSolution.profile_bounded`: shear bands the film points
+        do not resolve, so that film and traction depend on the bound); and where it returned the uniform-viscosity
+        solution because the cross-film one did not converge (``cross_film`` False)."""
         messages = super().check_validity(values)
         solution = values.get("ehl_solution")
         bounded = getattr(solution, "profile_bounded", None)
@@ -181,6 +182,9 @@ class Multigrid(FilmModel):
             messages.append(f"the film's viscosity profile reached its bound at {count} nodes (a film sheared into "
                             "bands the solver's nine film points do not resolve; its film and traction depend on "
                             "camcontact.ehl._thermal_kernels.PROFILE_BOUND)")
+        if getattr(solution, "cross_film", True) is False:
+            messages.append("the film's viscosity is uniform across the film at its mean temperature: the thermal "
+                            "solve with the viscosity varying across it did not converge (heavy sliding)")
         return messages
 
     def evaluate(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson",
