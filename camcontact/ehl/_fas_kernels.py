@@ -204,7 +204,7 @@ def coarse_newton(P, H0, f, f_load, parabola, K_over_pi, theta, phi, pinned, h, 
                 weight, mm = wedge_weight(i, k, n, s, P, theta)
                 coefficient = abs(s) * weight / h
                 if k == 0:
-                    coefficient += c_t
+                    coefficient += c_t / phi[i, 2]
                 if coefficient == 0.0:
                     continue
                 c_index = mm - i + 2

@@ -10,8 +10,8 @@ reference scaling of :mod:`camcontact.ehl.line_transient` for the transient one)
 
 .. math::
     L_i = \\frac{\\xi_{i-1/2}(P_{i-1} - P_i) + \\xi_{i+1/2}(P_{i+1} - P_i)}{h^2}
-          - |s|\\,\\frac{1.5\\,q_i - 2\\,q_{i-\\sigma} + 0.5\\,q_{i-2\\sigma}}{h}
-          - c_t\\,q_i, \\qquad q = c\\,\\theta\\bar\\rho H,\\ \\sigma = \\operatorname{sign}(s)
+          - |s|\\,\\frac{1.5\\,c_i q_i - 2\\,c_{i-\\sigma} q_{i-\\sigma} + 0.5\\,c_{i-2\\sigma} q_{i-2\\sigma}}{h}
+          - c_t\\,q_i, \\qquad q = \\theta\\bar\\rho H,\\ \\sigma = \\operatorname{sign}(s)
 
 a central Poiseuille term, the wedge scaled by the signed
 entrainment speed ratio s = u_m/u_ref and upwinded in the direction of the flow (second order,
@@ -30,10 +30,9 @@ layer (starvation) or a full film.
 
 phi holds three numbers per node, phi[i] = (a_i, k_i, c_i): the flow factor on the Poiseuille coefficient,
 xi = F rho H^3/(eta lambda) with F = a_i sqrt(1 + (k_i eta-bar(P))^2) (:func:`flow_factor`), and the Couette
-factor c_i on the content of the wedge and squeeze terms, q = c theta rho H (the entrainment flux of a film
-whose viscosity varies across it, u_e h = c u_m h: Yang & Wen's 1990 generalised Reynolds equation, its
-rho*/rho); (1, 0, 1) for the isothermal Newtonian film. Solvers with a squeeze term keep c = 1 (the squeeze
-content is the film's mean density times H, not the Couette one). The thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`) puts in a
+factor c_i on the wedge's content, c theta rho H (the entrainment flux of a film whose viscosity varies across it,
+u_e h = c u_m h: Yang & Wen's 1990 generalised Reynolds equation, its rho*/rho; the squeeze term keeps the
+content theta rho H); (1, 0, 1) for the isothermal Newtonian film. The thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`) puts in a
 the film's viscosity at its temperature and in k the Eyring coefficient of the Reynolds–Eyring flow factor
 cosh(tau_m/tau0) = sqrt(1 + Lambda^2), Lambda = k eta-bar: its dependence on the pressure is kept in the
 kernels (with Lambda >> 1 the Poiseuille flow of a sheared Eyring film no longer depends on the viscosity; a
@@ -353,7 +352,7 @@ def wedge_stencil(i, n, s, P, theta):
 
 
 @helper
-def local_derivatives(i, P, H, rho, theta, xi, dlx, drh, h, K, s, c_t):
+def local_derivatives(i, P, H, rho, theta, xi, dlx, drh, h, K, s, c_t, couette_i):
     """(dL_i/dP_i, dL_i/dP_{i-1}) of the discrete operator, local terms only.
 
     Includes the Poiseuille coefficients, their dependence on P (through rho and eta) and on
@@ -362,12 +361,13 @@ def local_derivatives(i, P, H, rho, theta, xi, dlx, drh, h, K, s, c_t):
     nodal law derivatives.
     """
     w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, theta)
-    return derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2)
+    return derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, couette_i, w0, w1, w2, m1, m2)
 
 
 @helper
-def derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2):
-    """:func:`local_derivatives` with the node's wedge stencil given (:func:`wedge_stencil`)."""
+def derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, couette_i, w0, w1, w2, m1, m2):
+    """:func:`local_derivatives` with the node's wedge stencil given (:func:`wedge_stencil`); ``couette_i`` the
+    node's Couette factor (rho holds it for the wedge; the squeeze content is rho/c)."""
     inv_pi = 1.0 / math.pi
     hh = h * h
     left = 0.5 * (xi[i - 1] + xi[i])
@@ -390,8 +390,8 @@ def derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m
             d_im1 += weight * dxi_dp
         d_i -= weight * dxi_dh * inv_pi * K[abs(m - i)]
         d_im1 -= weight * dxi_dh * inv_pi * K[abs(m - i + 1)]
-    # wedge and squeeze: -sum_k c_k d(rho_m H_m), c_k = |s| w_k / h (+ c_t at m = i)
-    d_i, d_im1 = _wedge_term(abs(s) * w0 / h + c_t, i, i, rho, drh, H, K, inv_pi, d_i, d_im1)
+    # wedge and squeeze: -sum_k c_k d(rho_m H_m), c_k = |s| w_k / h (+ c_t/c_i at m = i)
+    d_i, d_im1 = _wedge_term(abs(s) * w0 / h + c_t / couette_i, i, i, rho, drh, H, K, inv_pi, d_i, d_im1)
     d_i, d_im1 = _wedge_term(abs(s) * w1 / h, m1, i, rho, drh, H, K, inv_pi, d_i, d_im1)
     return _wedge_term(abs(s) * w2 / h, m2, i, rho, drh, H, K, inv_pi, d_i, d_im1)
 
@@ -480,15 +480,16 @@ def nodal_laws(P, H, theta, phi, lam, viscosity_code, density_code, params, rho,
 
 
 @helper
-def operator_at(i, P, H, rho, theta, xi, h, s, c_t):
+def operator_at(i, P, H, rho, theta, xi, h, s, c_t, couette_i):
     """L_i of the module docstring (central Poiseuille, signed upwind wedge, implicit squeeze)."""
     w0, w1, w2, m1, m2 = wedge_stencil(i, P.shape[0], s, P, theta)
-    return operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2)
+    return operator_with(i, P, H, rho, xi, h, s, c_t, couette_i, w0, w1, w2, m1, m2)
 
 
 @helper
-def operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2):
-    """:func:`operator_at` with the node's wedge stencil given (:func:`wedge_stencil`)."""
+def operator_with(i, P, H, rho, xi, h, s, c_t, couette_i, w0, w1, w2, m1, m2):
+    """:func:`operator_at` with the node's wedge stencil given (:func:`wedge_stencil`); ``couette_i`` the node's
+    Couette factor (rho holds it for the wedge; the squeeze content is rho/c)."""
     left = 0.5 * (xi[i - 1] + xi[i])
     right = 0.5 * (xi[i] + xi[i + 1])
     poiseuille = (left * (P[i - 1] - P[i]) + right * (P[i + 1] - P[i])) / (h * h)
@@ -499,7 +500,7 @@ def operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2):
         wedge += w1 * rho[m1] * H[m1]
     if w2 != 0.0:
         wedge += w2 * rho[m2] * H[m2]
-    return poiseuille - abs(s) * wedge / h - c_t * rho[i] * H[i]
+    return poiseuille - abs(s) * wedge / h - c_t * rho[i] / couette_i * H[i]
 
 
 @register_jitable
@@ -512,7 +513,7 @@ def reynolds_residual(P, H, theta, phi, h, lam, viscosity_code, density_code, pa
     out[0] = 0.0
     out[n - 1] = 0.0
     for i in range(1, n - 1):
-        out[i] = operator_at(i, P, H, rho, theta, xi, h, s, c_t)
+        out[i] = operator_at(i, P, H, rho, theta, xi, h, s, c_t, phi[i, 2])
 
 
 @helper
@@ -596,7 +597,7 @@ def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, para
     # the regime of every node is decided from the state at the start of the sweep
     for i in range(1, n - 1):
         coefficient = 0.5 * (xi[i - 1] + 2.0 * xi[i] + xi[i + 1]) / (h * h)
-        d_integral = c_t * rho[i] * K[0]
+        d_integral = c_t * rho[i] / phi[i, 2] * K[0]
         w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, theta)
         if w0 != 0.0:
             d_integral += abs(s) * w0 * rho[i] * K[0] / h
@@ -613,9 +614,9 @@ def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, para
         if update_theta and P[i] <= 0.0:  # a cavitated node: its film fraction first
             rho[i] = 0.0  # its own content out of L_i (the weights do not depend on it, see wedge_weight)
             weight, _ = wedge_weight(i, 0, n, s, P, theta)
-            own = (abs(s) * weight / h + c_t) * phi[i, 2]
+            own = abs(s) * weight / h * phi[i, 2] + c_t
             if own > 0.0 and H[i] > 0.0:
-                rest = operator_at(i, P, H, rho, theta, xi, h, s, c_t)  # L_i without its own content
+                rest = operator_at(i, P, H, rho, theta, xi, h, s, c_t, phi[i, 2])  # L_i without its own content
                 fraction = (rest - f[i]) / (own * H[i])
                 if fraction < 1.0 or dry[i]:
                     theta[i] = min(max(fraction, 0.0), 1.0)
@@ -626,8 +627,9 @@ def relax_hybrid(P, H, theta, phi, f, h, lam, viscosity_code, density_code, para
             if dry[i]:
                 continue
         w0, w1, w2, m1, m2 = wedge_stencil(i, n, s, P, theta)
-        r = f[i] - operator_with(i, P, H, rho, xi, h, s, c_t, w0, w1, w2, m1, m2)
-        diagonal, off_diagonal = derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, w0, w1, w2, m1, m2)
+        r = f[i] - operator_with(i, P, H, rho, xi, h, s, c_t, phi[i, 2], w0, w1, w2, m1, m2)
+        diagonal, off_diagonal = derivatives_with(i, P, H, rho, xi, dlx, drh, h, K, s, c_t, phi[i, 2], w0, w1, w2,
+                                                  m1, m2)
         if not jacobi[i]:
             if diagonal == 0.0:
                 continue

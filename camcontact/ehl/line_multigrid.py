@@ -464,7 +464,7 @@ def solve_multigrid(
     couette : array, optional
         Per node of the finest grid, the Couette factor c > 0 on the wedge's content, q = c rho H (the entrainment
         flux u_e h = c u_m h of a film whose viscosity varies across it: Yang & Wen's 1990 generalised Reynolds
-        equation; None: 1). Steady solves only (the squeeze term would take it too).
+        equation; None: 1).
 
         The factors are held fixed during the solve and kept on the solution (``flow_factor``, shape (n, 3):
         a, k, c). (A full multigrid start solves its start level without them; the cycles on the levels above

@@ -49,8 +49,7 @@ Models (equations in :mod:`camcontact.ehl._thermal_kernels`):
   converged, 0.82 with the bound 0.5). Where the iteration with the viscosity varying across the film does not
   converge and the uniform one does (measured at level 7: 5 of 54 heavy-sliding contacts), :func:`solve_thermal`
   returns the uniform one, with ``cross_film`` False and the record saying so.
-* **Simplifications (camcontact's, stated)**: the transient march keeps the Couette factor at 1 (its squeeze
-  content would take it too); density and heat capacity do not depend on temperature
+* **Simplifications (camcontact's, stated)**: density and heat capacity do not depend on temperature
   or pressure; no compression heating (alpha_T T u dp/dx) and no conduction along x; downstream of the film rupture
   the film is treated as full (it no longer affects the pressure); the inlet lubricant and both surfaces enter at T0.
   The energy equation runs on every 2^k-th node of the EHL grid (at most :data:`LAYER_NODES` nodes), its temperatures
@@ -781,8 +780,8 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
     levels, tolerance, strict, compiled, options
         As :func:`transient_cycle` (``options``: its further keywords).
     thermal, non_newtonian, cross_film : bool
-        As :func:`solve_thermal`; with ``cross_film`` the march takes the Poiseuille factors of the film's viscosity
-        profile, while its Couette factor stays 1 (the transient kernels' squeeze content would take it too).
+        As :func:`solve_thermal`: with ``cross_film`` the march takes the Poiseuille and Couette factors of the film's
+        viscosity profile (the squeeze term keeps the film's content, the wedge the Couette factor's).
     """
     from .line_transient import transient_cycle
 
@@ -817,7 +816,7 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
         sc = solver.scaling
         H = solver.film(solver.P, solver.H0, series["R"][i])
         flow = None if solver.flow is None else np.column_stack(
-            [solver.flow[0], np.zeros(solver.n) if solver.flow[1] is None else solver.flow[1]])
+            [solver.flow[0], np.zeros(solver.n) if solver.flow[1] is None else solver.flow[1], solver.flow[2]])
         snapshot = LineEHLSolution(problem=solver.problem, level=solver.levels, X=solver.X, P=solver.P, H=H,
                                    H0=solver.H0, record=None, flow_factor=flow)
         fields = _layers(here, snapshot, thermal, tau0, state, kernels,
@@ -828,7 +827,7 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
         out["surface"][i] = float(max(fields["T1"][wet].max(), fields["T2"][wet].max()))
         out["traction"][i] = -_trapezoid(fields["tau"], fields["x"], wet) / series["w"][i]
         ran[i] = True
-        solver.flow = (fields["a"], fields["k"] if non_newtonian else None)
+        solver.flow = (fields["a"], fields["k"] if non_newtonian else None, fields["c"])
         clock[0] += time.perf_counter() - start
 
     u_m = 0.5 * (series["u1"] + series["u2"])

@@ -282,7 +282,8 @@ def _checked_oil_layer(oil_layer, scaling: TransientScaling) -> float:
 
 
 def meniscus_balance(P: np.ndarray, H: np.ndarray, problem: LineEHLProblem, s: float, j: int, h: float,
-                     layer: float, shift: float, dT: float, factor: np.ndarray | None = None) -> float:
+                     layer: float, shift: float, dT: float, factor: np.ndarray | None = None,
+                     couette: np.ndarray | None = None) -> float:
     """The mass balance of an inlet meniscus before node j of a step solved with the nodes before j held (arrays in
     the flow's frame, inflow at index 0; s the speed ratio, h the spacing, reference scaling):
 
@@ -297,9 +298,12 @@ def meniscus_balance(P: np.ndarray, H: np.ndarray, problem: LineEHLProblem, s: f
     conservation of mass (steady: the film passes exactly what the layer brings, the condition of
     :func:`camcontact.ehl.line_starved.solve_starved`); g > 0: the meniscus lies too far upstream. ``factor``: the
     flow factors of nodes j and j + 1 on the Poiseuille coefficient (a thermal or Eyring film,
-    :func:`camcontact.ehl._kernels.flow_factor`; None: 1)."""
+    :func:`camcontact.ehl._kernels.flow_factor`; None: 1); ``couette``: the Couette factors of nodes j - 1 and j on
+    the wedge's content (None: 1)."""
     rho = problem.density_ratio(P[j - 1:j + 2])
     q = rho * H[j - 1:j + 2]
+    if couette is not None:
+        q[:2] = q[:2] * couette
     xi = problem.flow_coefficient(P[j:j + 2], H[j:j + 2])
     if factor is not None:
         xi = xi * factor
@@ -402,9 +406,10 @@ class TransientLineSolver:
         self.dt_previous: float | None = None
         #: film fraction on the reference grid (1: full film; below 1 where a mass-conserving march cavitates)
         self.theta = np.ones(self.n)
-        #: flow factors (a, k) on the reference grid for the next steps (:func:`camcontact.ehl._kernels.flow_factor`;
-        #: None: the isothermal Newtonian film), set by the thermal march (:mod:`camcontact.ehl.line_thermal`)
-        self.flow: tuple[np.ndarray, np.ndarray | None] | None = None
+        #: flow factors (a, k) and optionally Couette factors c on the reference grid for the next steps
+        #: (:mod:`camcontact.ehl._kernels`; None: the isothermal Newtonian film), set by the thermal march
+        #: (:mod:`camcontact.ehl.line_thermal`)
+        self.flow: tuple | None = None
 
     def _hierarchy(self, settings, mirrored: bool = False) -> _TransientHierarchy:
         """The level hierarchy of ``settings``; ``mirrored``: of the domain reflected about X = 0
@@ -645,8 +650,9 @@ class TransientLineSolver:
                 a = frame(self.flow[0])[j:j + 2]
                 k = np.zeros(2) if self.flow[1] is None else frame(self.flow[1])[j:j + 2]
                 factor = self.problem.poiseuille_factor(P_f[j:j + 2], a, k)
+            couette = None if self.flow is None or len(self.flow) < 3 else frame(self.flow[2])[j - 1:j + 1]
             g = meniscus_balance(P_f, H_f, self.problem, s, j, h, float(layer[j - 1]), X_flow[j] - 0.5 * h - X_before,
-                                 dT, factor)
+                                 dT, factor, couette)
             theta = frame(self.theta)
             theta[:j] = np.clip(layer[:j] / np.maximum(H_f[:j], 1e-300), 0.0, 1.0)  # the held layer, as it is
             tried[j] = (result, frame(theta), g)
@@ -725,7 +731,8 @@ class TransientLineSolver:
             if self.flow is None:
                 hierarchy.set_flow_factor(np.ones(self.n))
             else:
-                hierarchy.set_flow_factor(flip(self.flow[0]), None if self.flow[1] is None else flip(self.flow[1]))
+                hierarchy.set_flow_factor(flip(self.flow[0]), None if self.flow[1] is None else flip(self.flow[1]),
+                                          None if len(self.flow) < 3 else flip(self.flow[2]))
             try:
                 P_new, H0_new, H, record = self._cycles(hierarchy, flip(P), H0, flip(f), f_load)
             finally:

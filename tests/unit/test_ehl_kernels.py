@@ -44,6 +44,25 @@ def test_residual_twin(name):
     np.testing.assert_allclose(compiled, python, rtol=1e-12, atol=1e-12)
 
 
+def test_residual_with_couette_factors_is_the_generalised_operator():
+    """The residual with flow factors (a, k) and Couette factors c, written out here with numpy for a full film
+    (second-order upwind weights 1.5, -2, 0.5 from the third node on): the wedge carries c rho H, the squeeze term
+    c_t rho H does not (its content is the film's, Yang & Wen's rho_e h)."""
+    problem, X, h, P, H = _state()
+    codes, params = problem.law_codes, problem.law_parameters
+    a, k, c = 1.0 + 0.5 * np.sin(3.0 * X), 1e-3 * (1.0 + X**2), 1.0 + 0.1 * np.cos(2.0 * X)
+    s, c_t = 0.8, 2.5
+    out = np.empty(X.size)
+    _kernels.compiled("reynolds_residual")(P, H, np.ones(X.size), np.column_stack([a, k, c]), h, problem.lam, *codes,
+                                          params, s, c_t, out)
+    xi = problem.flow_coefficient(P, H) * problem.poiseuille_factor(P, a, k)
+    q = problem.density_ratio(P) * H
+    i = np.arange(2, X.size - 1)
+    poiseuille = (0.5 * (xi[i - 1] + xi[i]) * (P[i - 1] - P[i]) + 0.5 * (xi[i] + xi[i + 1]) * (P[i + 1] - P[i])) / h**2
+    wedge = s * (1.5 * c[i] * q[i] - 2.0 * c[i - 1] * q[i - 1] + 0.5 * c[i - 2] * q[i - 2]) / h
+    np.testing.assert_allclose(out[i], poiseuille - wedge - c_t * q[i], rtol=1e-10, atol=1e-10 * np.abs(wedge).max())
+
+
 def test_relaxation_twin_gives_the_same_sweep():
     problem, X, h, P, H = _state()
     K = np.array([_kernels.kernel_value(float(d), h) for d in range(16)])

@@ -323,10 +323,9 @@ def test_plot_draws_fields(tmp_path):
 # ------------------------------------------------------------------------------ the transient march
 def test_thermal_transient_at_constant_conditions_settles_on_the_steady_thermal_solution():
     """Held at one load, radius and speeds, the thermal transient march (lagged coupling, one energy solve per
-    step) settles on the steady thermal solution: at S = 0.05 films and traction to 1e-4 after 40 steps of 20 us
-    (measured 5e-5 and 3e-6), the film temperature to 5e-3 (4e-3). The march leaves the Couette factor at 1 (its
-    squeeze content would take it too), so with more sliding it keeps the films of a film whose entrainment is
-    u_m: at S = 0.5 h_c is 0.6 % above the steady solve's (whose Couette factor is 0.990-1.029)."""
+    step; the flow and Couette factors of the film's viscosity profile) settles on the steady thermal solution:
+    films and traction to 1e-4 after 40 steps of 20 us (measured at S = 0.5: h_c 9e-6, h_min 3e-5, traction 2e-5;
+    S = 0.05: 1e-5), the film temperature to 1e-3 (1e-4 and 2e-4)."""
     from camcontact.ehl.line_thermal import thermal_transient_cycle
 
     times = np.arange(40) * 2e-5
@@ -336,17 +335,14 @@ def test_thermal_transient_at_constant_conditions_settles_on_the_steady_thermal_
         march = thermal_transient_cycle(times, contact.w, contact.R, contact.u1, contact.u2, contact=contact,
                                         levels=LEVEL)
         assert march.films.converged.all() and march.thermal.all()
-        if S == 0.5:
-            assert 2e-3 < march.films.h_c[-1] / steady.h_c - 1.0 < 1e-2
-            break
         assert march.films.h_c[-1] == pytest.approx(steady.h_c, rel=1e-4)
         assert march.films.h_min[-1] == pytest.approx(steady.h_min, rel=1e-4)
         assert march.traction_coefficient[-1] == pytest.approx(steady.traction_coefficient, rel=1e-4)
-        assert march.temperature_rise[-1] == pytest.approx(steady.max_temperature_rise, rel=5e-3)
+        assert march.temperature_rise[-1] == pytest.approx(steady.max_temperature_rise, rel=1e-3)
         assert march.films.h_c[0] > march.films.h_c[-1]  # the isothermal start thins as the inlet heats
         assert not march.profile_bounded.any()
-        frame = march.to_frame()
-        assert "max film temperature rise [K]" in frame and len(frame) == times.size
+    frame = march.to_frame()
+    assert "max film temperature rise [K]" in frame and len(frame) == times.size
 
 
 def test_a_thermal_transient_reports_where_the_viscosity_profile_reached_its_bound():
