@@ -22,12 +22,12 @@ Level 8 by default (the issue's case). Until the multigrid solved the pressure s
 at 122 deg with 720 steps and 5 % slip). Measured (medians of 3, 2026-11-28, with the film's viscosity varying across
 it; two runs, the second with the Couette factor in the march too): isothermal 5.9 / 7.9 s, thermal 22.4 / 26.4 s
 rolling and 20.8 / 24.2 s with 5 % slip (energy 15.9-18.5 s; the isothermal march's own spread says how noisy the
-machine was), no step unconverged; h_min 651 / 638 nm against 671 / 660 nm isothermal, the film up to 13 / 20 K
-warmer (with the viscosity uniform across the film, another day: 9.5 s, 23.8 s and 21.2 s, energy 14.1-14.2 s). In the plot, the rolling case's largest film
-temperature rise jitters by a few kelvin from step to step: at level 8 the energy equation runs on every second node
-(at most 900, ``line_thermal.LAYER_NODES``) and the peak behind the spike falls on or between them; it does not change
-with the film's cycles or tolerance (V or F, 1e-6 or 1e-8: the same to 0.01 K), and the films and the traction are
-smooth.
+machine was), no step unconverged; h_min 651 / 638 nm against 671 / 660 nm isothermal, the film up to 13 / 20 K warmer
+(with the viscosity uniform across the film, another day: 9.5 s, 23.8 s and 21.2 s, energy 14.1-14.2 s). In the plot,
+the rolling case's largest film temperature rise jitters by a few kelvin from step to step: at level 8 the energy
+equation runs on every second node (at most 900, ``line_thermal.LAYER_NODES``) and the peak behind the spike falls on
+or between them; it does not change with the film's cycles or tolerance (V or F, 1e-6 or 1e-8: the same to 0.01 K),
+and the films and the traction are smooth.
 
     python benchmarks/thermal_cam_cycle.py            # level 8, 720 steps (0.5 deg), 3 repeats
     python benchmarks/thermal_cam_cycle.py --quick    # level 6, 90 steps, one repeat (the tests run this)

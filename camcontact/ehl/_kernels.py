@@ -32,13 +32,14 @@ phi holds three numbers per node, phi[i] = (a_i, k_i, c_i): the flow factor on t
 xi = F rho H^3/(eta lambda) with F = a_i sqrt(1 + (k_i eta-bar(P))^2) (:func:`flow_factor`), and the Couette
 factor c_i on the wedge's content, c theta rho H (the entrainment flux of a film whose viscosity varies across it,
 u_e h = c u_m h: Yang & Wen's 1990 generalised Reynolds equation, its rho*/rho; the squeeze term keeps the
-content theta rho H); (1, 0, 1) for the isothermal Newtonian film. The thermal and non-Newtonian solver (:mod:`camcontact.ehl.line_thermal`) puts in a
-the film's viscosity at its temperature and in k the Eyring coefficient of the Reynolds–Eyring flow factor
-cosh(tau_m/tau0) = sqrt(1 + Lambda^2), Lambda = k eta-bar: its dependence on the pressure is kept in the
+content theta rho H); (1, 0, 1) for the isothermal Newtonian film. The thermal and non-Newtonian solver
+(:mod:`camcontact.ehl.line_thermal`) puts in a the Poiseuille coefficient of the film's viscosity profile, in k
+the Eyring coefficient of the Reynolds–Eyring flow factor cosh(tau_m/tau0) = sqrt(1 + Lambda^2), Lambda =
+k eta-bar, and in c the profile's Couette factor. The Eyring factor's dependence on the pressure is kept in the
 kernels (with Lambda >> 1 the Poiseuille flow of a sheared Eyring film no longer depends on the viscosity; a
 flow factor frozen at the viscosity of the previous pressure made the Hertz zone of a heavily loaded contact
 behave like a contact of 1000 times its load parameter M, and the multigrid diverged: measured, M = 28,
-L = 14, S = 0.1). a and k are held fixed during a solve.
+L = 14, S = 0.1). a, k and c are held fixed during a solve.
 
 Importing this module imports numba but compiles nothing.
 """
