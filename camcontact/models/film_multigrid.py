@@ -179,9 +179,9 @@ class Multigrid(FilmModel):
         bounded = getattr(solution, "profile_bounded", None)
         count = 0 if bounded is None else int(np.count_nonzero(bounded & solution.wet))
         if count:
-            messages.append(f"the film's viscosity profile reached its bound at {count} nodes (a film sheared into "
-                            "bands the solver's nine film points do not resolve; its film and traction depend on "
-                            "camcontact.ehl._thermal_kernels.PROFILE_BOUND)")
+            from ..ehl.line_thermal import profile_bound_note
+
+            messages.append(profile_bound_note(count))
         if getattr(solution, "cross_film", True) is False:
             messages.append("the film's viscosity is uniform across the film at its mean temperature: the thermal "
                             "solve with the viscosity varying across it did not converge (heavy sliding)")

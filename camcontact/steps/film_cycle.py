@@ -262,7 +262,7 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
     The film of an angle takes the flow factors of the last angle's solution across the film, so the march's
     first angle (the steadiest one) and the angle after one without such a solution have an isothermal
     (Newtonian) film; ``film_regime`` says so."""
-    from ..ehl.line_thermal import thermal_transient_cycle
+    from ..ehl.line_thermal import profile_bound_note, thermal_transient_cycle
 
     u1 = np.asarray(u_cam, dtype=float) * film_speed_factor
     u2 = np.asarray(u_follower, dtype=float) * film_speed_factor
@@ -298,8 +298,7 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
                 f"transient (squeeze), {'isothermal' if film_model.thermal else 'Newtonian'} here: "
                 + ("the march's start" if i == first else "a surface did not move with the entrainment"))
         if bounded[i]:
-            note += (f"; the film's viscosity profile reached its bound at {int(bounded[i])} nodes (its film depends "
-                     "on camcontact.ehl._thermal_kernels.PROFILE_BOUND)")
+            note += "; " + profile_bound_note(int(bounded[i]))
         regime[i] = note if converged[i] else f"{note}: not converged: {messages[i]}"
     return {"h_c": h_c, "h_min": h_min, "film_regime": regime, "film_valid": converged & (bounded == 0),
             "film_solutions": [None] * u.size, "x_min": x_min,
