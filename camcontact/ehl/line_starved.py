@@ -20,8 +20,10 @@ back ahead of the domain), then finds X_m with F(X_m) = H_oil: each trial menisc
 domain [X_m, X_b] (:func:`camcontact.ehl.line_multigrid.solve_multigrid`, warm-started from the nearest trial,
 by full multigrid if that does not converge), bracketed by moving X_m towards the Hertz inlet edge
 (:data:`MENISCUS_STEP`) and found by regula falsi (Illinois) on ln(-1 - X_m) until |F/H_oil - 1| is below
-ten times the tolerance. The meniscus is a continuous unknown, not a grid node, so that the flux matches the
-supply to that tolerance. The solution is returned on the reduced domain's grid continued upstream at the same
+ten times the tolerance (:func:`find_meniscus`; the thermal solver's starved inlet,
+:func:`camcontact.ehl.line_thermal.solve_thermal`, searches its meniscus with the same function over thermal
+solves). The meniscus is a continuous unknown, not a grid node, so that the flux matches the supply to that
+tolerance. The solution is returned on the reduced domain's grid continued upstream at the same
 spacing to X_a (P = 0 there, the film from the same deformation integral), with theta from mass conservation:
 H_oil/H upstream of the meniscus, 1 in the pressurised film, behind the exit the content that carries F through
 every face of the solver's discrete flux (about F/H).
@@ -70,7 +72,7 @@ from .line_multigrid import MultigridSettings, solve_multigrid
 from .line_problem import LineEHLProblem
 from .line_solution import ConvergenceRecord, LineEHLSolution
 
-__all__ = ["MAX_MENISCUS_SOLVES", "MENISCUS_STEP", "MIN_MENISCUS_GAP", "solve_starved", "wet_flux"]
+__all__ = ["MAX_MENISCUS_SOLVES", "MENISCUS_STEP", "MIN_MENISCUS_GAP", "find_meniscus", "solve_starved", "wet_flux"]
 
 
 def wet_flux(solution: LineEHLSolution) -> float:
@@ -119,16 +121,42 @@ def solve_starved(problem: LineEHLProblem, levels: int = 9, *, tolerance: float 
         solutions[x_m] = solution
         return wet_flux(solution) / supply - 1.0
 
-    # bracket: the distance d = -1 - X_m to the Hertz inlet edge shrinks by MENISCUS_STEP until the flux
-    # falls below the supply; then regula falsi (Illinois) on log d, where F varies smoothly
-    d_low, g_low = -1.0 - X_a, F_ff / supply - 1.0
+    x_m, error = find_meniscus(flux_error, X_a, F_ff / supply - 1.0, target=target, supply=supply,
+                               record=flooded.record, caller="solve_starved")
+    chosen = solutions[x_m]
+    converged = chosen.record.converged and abs(error) <= target
+    message = (f"meniscus at X = {x_m:.6g}; flux/supply - 1 = {error:.3g}; {len(solutions) + 1} solves")
+    return _result(problem, _extended(chosen, X_a), supply, start, message, converged, strict, x_m)
+
+
+#: the bracketing moves the meniscus this fraction of its distance to the Hertz inlet edge per solve
+MENISCUS_STEP = 0.3
+#: the closest approach of the meniscus to the Hertz inlet edge [b] (a supply too small for it is refused)
+MIN_MENISCUS_GAP = 1e-4
+#: regula-falsi solves at most (each a multigrid solve warm-started from the nearest meniscus)
+MAX_MENISCUS_SOLVES = 30
+
+
+def find_meniscus(flux_error, X_a: float, flooded_error: float, *, target: float, supply: float, record,
+                  caller: str) -> tuple[float, float]:
+    """The meniscus X_m [-] where a starved contact's flux meets its supply, and the error there.
+
+    ``flux_error(X_m)`` is F/supply - 1 of the flooded solve of the domain [X_m, X_b] (it keeps its solution,
+    keyed by the X_m it was called with; the returned X_m is one of those); ``flooded_error`` is that of the whole
+    domain from ``X_a`` (> 0: the supply is below the flooded flux). The distance d = -1 - X_m to the Hertz inlet
+    edge shrinks by :data:`MENISCUS_STEP` until the flux falls below the supply, then regula falsi (Illinois) on
+    ln d, where F varies smoothly, until |F/supply - 1| <= ``target`` or :data:`MAX_MENISCUS_SOLVES`.
+    ConvergenceError (with ``record``, the flooded solve's) where a meniscus :data:`MIN_MENISCUS_GAP` ahead of the
+    Hertz edge still passes more than ``supply``; ``caller`` names the solver in that message.
+    """
+    d_low, g_low = -1.0 - X_a, flooded_error
     d_high, g_high = d_low, g_low
     while g_high >= 0.0:
         d_low, g_low = d_high, g_high
         d_high = d_low * (1.0 - MENISCUS_STEP)
         if d_high < MIN_MENISCUS_GAP:
-            raise ConvergenceError(f"solve_starved: supply {supply:.6g} is below the flux of a contact whose meniscus "
-                                   f"is {MIN_MENISCUS_GAP:g} b ahead of the Hertz edge: no steady film", flooded.record)
+            raise ConvergenceError(f"{caller}: supply {supply:.6g} is below the flux of a contact whose meniscus "
+                                   f"is {MIN_MENISCUS_GAP:g} b ahead of the Hertz edge: no steady film", record)
         g_high = flux_error(-1.0 - d_high)
     a, b, ga, gb = math.log(d_low), math.log(d_high), g_low, g_high
     side = 0
@@ -144,19 +172,7 @@ def solve_starved(problem: LineEHLProblem, levels: int = 9, *, tolerance: float 
             ga = 0.5 * ga if side == -1 else ga
             side = -1
         b, gb = c, gc
-    x_m = -1.0 - math.exp(c)
-    chosen = solutions[x_m]
-    converged = chosen.record.converged and abs(gc) <= target
-    message = (f"meniscus at X = {x_m:.6g}; flux/supply - 1 = {gc:.3g}; {len(solutions) + 1} solves")
-    return _result(problem, _extended(chosen, X_a), supply, start, message, converged, strict, x_m)
-
-
-#: the bracketing moves the meniscus this fraction of its distance to the Hertz inlet edge per solve
-MENISCUS_STEP = 0.3
-#: the closest approach of the meniscus to the Hertz inlet edge [b] (a supply too small for it is refused)
-MIN_MENISCUS_GAP = 1e-4
-#: regula-falsi solves at most (each a multigrid solve warm-started from the nearest meniscus)
-MAX_MENISCUS_SOLVES = 30
+    return -1.0 - math.exp(c), gc
 
 
 def _extended(solution: LineEHLSolution, X_a: float) -> LineEHLSolution:

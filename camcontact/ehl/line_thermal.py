@@ -23,6 +23,14 @@ temperature, in a fixed-point iteration around that solver:
    per node, it turned the Hertz zone of a heavily loaded contact into one of 1000 times its load parameter M
    and the multigrid diverged (measured: M = 28, L = 14, S = 0.1).
 
+A starved inlet (``ThermalLineContact.oil_layer``) is solved as the isothermal one
+(:mod:`camcontact.ehl.line_starved`): the meniscus where the thermal film of the shorter inlet carries exactly the
+supplied layer. Measured (steel rollers, 200 kN/m, u_m 5 m/s, S = 1, Eyring 5 MPa, level 6; layers 0.8, 0.5 and 0.2
+of the flooded h_c): the film is the layer's (h_c/h_c,iso of the isothermal starved contact 0.975, 0.965, 0.961;
+flooded 0.886), the film temperature peaks 97, 87, 77 K (flooded 113 K) and the traction rises to 0.037, 0.043, 0.053
+(flooded 0.029): a starved inlet holds less lubricant to heat, and the thinner, cooler film shears harder; 8-16
+thermal solves, 2-3 s.
+
 Levels above :data:`NESTED_FROM` iterate on coarser levels first (nested iteration). A multigrid solve that fails
 with the mixed flow factors is retried with shorter plain steps; the record says what happened.
 :func:`thermal_transient_cycle` couples the same energy equation to the transient march of
@@ -149,6 +157,9 @@ class ThermalLineContact:
     viscosity, density, z, p0, domain, elastic
         As :meth:`camcontact.ehl.line_problem.LineEHLProblem.from_contact` (Roelands index z: from eta0 and
         alpha when None).
+    oil_layer : float, optional
+        A starved inlet: the layer of lubricant [m] (both surfaces together, at ambient density) the surfaces
+        bring to the contact (:func:`solve_thermal`'s starved solve; None: flooded).
     """
 
     R: float = number_field(validators=[positive("m")])
@@ -172,6 +183,7 @@ class ThermalLineContact:
     p0: float = ROELANDS_P0
     domain: tuple = (-4.0, 1.5)
     elastic: bool = True
+    oil_layer: float | None = number_field(optional=True, validators=[positive("m")])
 
     @property
     def u_m(self) -> float:
@@ -187,6 +199,14 @@ class ThermalLineContact:
     def slide_roll_ratio(self) -> float:
         """S = (u1 - u2)/u_m [-]."""
         return self.sliding_speed / self.u_m
+
+    @property
+    def supply(self) -> float | None:
+        """The starved inlet's content H_oil = h_oil R/b^2 [-] (:attr:`LineEHLProblem.supply`; None: flooded),
+        b^2 = 8 w R/(pi E')."""
+        if self.oil_layer is None:
+            return None
+        return self.oil_layer * self.R / (8.0 * self.w * self.R / (math.pi * self.E_reduced))
 
     def problem(self) -> LineEHLProblem:
         """The dimensionless isothermal problem of the contact (:meth:`LineEHLProblem.from_contact`)."""
@@ -224,6 +244,9 @@ class ThermalLineSolution:
     #: the viscosity varied across the film (False: uniform at its mean temperature, by request or where the
     #: cross-film iteration did not converge and this one did; the record's message says which)
     cross_film: bool = True
+    #: a starved inlet's meniscus x [m] (where the supplied layer fills the gap; the solution's domain starts there;
+    #: ``isothermal`` is then the isothermal starved solution of the same supply); None: flooded
+    meniscus: float | None = None
 
     @property
     def scales(self) -> dict:
@@ -520,6 +543,16 @@ def solve_thermal(
         Raise ConvergenceError instead of warning when not converged.
     compiled : bool
         Numba kernels (False: the plain-Python twins, slow; for tests).
+
+    A starved inlet (``contact.oil_layer``) is solved as :func:`camcontact.ehl.line_starved.solve_starved` solves the
+    isothermal one, each trial meniscus X_m a thermal solve of the domain [X_m, X_b]: the meniscus where the
+    thermal film's mass flux (:func:`~camcontact.ehl.line_starved.wet_flux`, with its flow and Couette factors)
+    equals the supply to max(``output_tolerance``, 10 ``tolerance``) (the flux of one thermal solve is settled to
+    about ``output_tolerance``), by :func:`~camcontact.ehl.line_starved.find_meniscus`. The lubricant and the
+    surfaces enter the meniscus at T0 (the unpressurised layer ahead of it is not heated here). A supply of at least
+    the thermal flooded film's flux leaves the contact flooded. The solution's domain starts at the meniscus
+    (:attr:`ThermalLineSolution.meniscus`), its ``isothermal`` is the isothermal starved solution of the same supply
+    and its record's message gives the meniscus, the flux error and the number of thermal solves.
     """
     if not isinstance(contact, ThermalLineContact):
         raise InputError(f"solve_thermal: contact = {contact!r}; allowed: a ThermalLineContact")
@@ -537,22 +570,11 @@ def solve_thermal(
         raise InputError(f"solve_thermal: max_iterations = {max_iterations!r}; allowed: an integer >= 1")
     options = dict(thermal=thermal, non_newtonian=non_newtonian, tolerance=tolerance, flow_tolerance=flow_tolerance,
                    output_tolerance=output_tolerance, relaxation=relaxation, max_iterations=max_iterations,
-                   strict=strict, compiled=compiled)
-    start = time.perf_counter()
-    try:
-        result, failure = _iterate(contact, levels, cross_film=cross_film, **options), None
-    except ConvergenceError as exc:  # a non-finite flow factor
-        if not (cross_film and thermal):
-            raise
-        result, failure = None, exc
-    if cross_film and thermal and (result is None or not result.record.converged):
-        # the viscosity profile's feedback stalled (heavy sliding): the uniform-viscosity model, if it converges
-        uniform = _iterate(contact, levels, cross_film=False, **options)
-        if uniform.record.converged or result is None:
-            text = result.record.message if result is not None else str(failure)
-            record = attrs.evolve(uniform.record, wall_time=time.perf_counter() - start,
-                                  message=f"{UNIFORM_FALLBACK} ({text}); {uniform.record.message}")
-            result = attrs.evolve(uniform, record=record)
+                   cross_film=cross_film, strict=strict, compiled=compiled)
+    if contact.oil_layer is not None:
+        result = _starved(contact, levels, options)
+    else:
+        result = _flooded(contact, levels, options)
     if not result.record.converged:
         text = f"thermal line EHL did not converge: {result.record.message}"
         if strict:
@@ -572,6 +594,66 @@ def profile_bound_note(count: int) -> str:
 #: the record's message where :func:`solve_thermal` returns the uniform-viscosity solution
 UNIFORM_FALLBACK = ("the viscosity uniform across the film at its mean temperature (cross_film=False): the iteration "
                     "with the viscosity varying across it did not converge")
+
+
+def _flooded(contact: ThermalLineContact, levels: int, options: dict) -> ThermalLineSolution:
+    """The flooded solve of :func:`solve_thermal` (``options`` its checked keywords), with the uniform-viscosity
+    fallback; not converged: the record says so (no warning here)."""
+    start = time.perf_counter()
+    cross_film, thermal = options["cross_film"], options["thermal"]
+    try:
+        result, failure = _iterate(contact, levels, **options), None
+    except ConvergenceError as exc:  # a non-finite flow factor
+        if not (cross_film and thermal):
+            raise
+        result, failure = None, exc
+    if cross_film and thermal and (result is None or not result.record.converged):
+        # the viscosity profile's feedback stalled (heavy sliding): the uniform-viscosity model, if it converges
+        uniform = _iterate(contact, levels, **(options | {"cross_film": False}))
+        if uniform.record.converged or result is None:
+            text = result.record.message if result is not None else str(failure)
+            record = attrs.evolve(uniform.record, wall_time=time.perf_counter() - start,
+                                  message=f"{UNIFORM_FALLBACK} ({text}); {uniform.record.message}")
+            result = attrs.evolve(uniform, record=record)
+    return result
+
+
+def _starved(contact: ThermalLineContact, levels: int, options: dict) -> ThermalLineSolution:
+    """The starved solve of :func:`solve_thermal` (its docstring): the meniscus by
+    :func:`~camcontact.ehl.line_starved.find_meniscus` over flooded thermal solves of the reduced domains."""
+    from .line_starved import find_meniscus, solve_starved, wet_flux
+
+    start = time.perf_counter()
+    fed = attrs.evolve(contact, oil_layer=None)
+    supply = float(contact.supply)
+    X_a, X_b = contact.domain
+    solutions: dict[float, ThermalLineSolution] = {}
+
+    def flux_error(x_m: float) -> float:
+        solutions[x_m] = _flooded(attrs.evolve(fed, domain=(x_m, X_b)), levels, options)
+        return wet_flux(solutions[x_m].ehl) / supply - 1.0
+
+    flooded = _flooded(fed, levels, options)
+    F_ff = wet_flux(flooded.ehl)
+    if supply >= F_ff:
+        chosen, x_m, converged = flooded, None, flooded.record.converged
+        message = f"flooded: supply {supply:.6g} >= the thermal flooded flux {F_ff:.6g}"
+    else:
+        target = max(options["output_tolerance"], 10.0 * options["tolerance"])
+        x_m, error = find_meniscus(flux_error, X_a, F_ff / supply - 1.0, target=target, supply=supply,
+                                   record=flooded.record, caller="solve_thermal (starved inlet)")
+        chosen = solutions[x_m]
+        converged = chosen.record.converged and abs(error) <= target
+        message = (f"meniscus at X = {x_m:.6g}; flux/supply - 1 = {error:.3g} (target {target:g}); "
+                   f"{len(solutions) + 1} thermal solves")
+    starved_problem = attrs.evolve(contact.problem(), cavitation="mass_conserving", supply=supply)
+    isothermal = solve_starved(starved_problem, levels, tolerance=options["tolerance"], strict=options["strict"],
+                               compiled=options["compiled"])
+    record = attrs.evolve(chosen.record, method=f"starved inlet: meniscus by regula falsi over {chosen.record.method}",
+                          wall_time=time.perf_counter() - start, converged=bool(converged),
+                          message=f"{message}; last solve: {chosen.record.message}")
+    meniscus = None if x_m is None else x_m * chosen.scales["b"]
+    return attrs.evolve(chosen, contact=contact, isothermal=isothermal, record=record, meniscus=meniscus)
 
 
 def _iterate(contact: ThermalLineContact, levels: int, *, thermal: bool, non_newtonian: bool, tolerance: float,

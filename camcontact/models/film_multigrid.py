@@ -203,21 +203,21 @@ class Multigrid(FilmModel):
         problem's ``supply``); a layer that the flooded contact could not pass leaves it flooded. With ``thermal`` /
         ``non_newtonian``: the thermal and non-Newtonian solve (class docstring) from the surface speeds u1, u2
         [m/s] and the surfaces' ``effusivity`` (a pair [W s^0.5/(m^2 K)]), also giving the isothermal films
-        ``h_c_isothermal``, ``h_min_isothermal``; ``initial`` is not used there.
+        ``h_c_isothermal``, ``h_min_isothermal``; ``initial`` is not used there; with ``oil_layer`` the starved
+        thermal solve (:func:`camcontact.ehl.line_thermal.solve_thermal`), its isothermal films those of the isothermal
+        starved contact with the same layer.
         """
         from ..ehl.line_multigrid import solve_multigrid
 
         problem = self.problem(R, w, E_reduced, u_m, eta0, alpha, lubricant_state, density_law)
+        if oil_layer is not None and not (math.isfinite(oil_layer) and oil_layer > 0):
+            raise InputError(f"film model 'multigrid': oil_layer = {oil_layer!r} m must be finite and > 0")
         if self.thermal or self.non_newtonian:
-            if oil_layer is not None:
-                raise InputError("film model 'multigrid': a starved inlet (oil_layer) with the thermal or "
-                                 "non-Newtonian solver is not supported; leave out the oil layer or those effects")
-            return self._thermal_films(problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity)
+            return self._thermal_films(problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity,
+                                       oil_layer)
         if oil_layer is not None:
             from ..ehl.line_starved import solve_starved
 
-            if not (math.isfinite(oil_layer) and oil_layer > 0):
-                raise InputError(f"film model 'multigrid': oil_layer = {oil_layer!r} m must be finite and > 0")
             b_squared = 8.0 * w * R / (math.pi * E_reduced)
             starved = attrs.evolve(problem, cavitation="mass_conserving", supply=float(oil_layer) * R / b_squared)
             solution = solve_starved(starved, self.levels, tolerance=self.tolerance, strict=self.strict)
@@ -228,12 +228,14 @@ class Multigrid(FilmModel):
         return {"h_c": values["h_c"], "h_min": values["h_min"], "ehl_solution": solution,
                 "convergence": solution.record, "M": problem.M, "L": problem.L}
 
-    def thermal_contact(self, problem, R, w, E_reduced, u1, u2, eta0, alpha, lubricant_state, effusivity):
+    def thermal_contact(self, problem, R, w, E_reduced, u1, u2, eta0, alpha, lubricant_state, effusivity,
+                        oil_layer=None):
         """The :class:`~camcontact.ehl.line_thermal.ThermalLineContact` of the thermal and/or non-Newtonian solve:
         ``problem`` (:meth:`problem`) gives the laws and domain; R [m], w [N/m], E' [Pa], surface speeds u1, u2
-        [m/s], eta0 [Pa s], alpha [1/Pa]; the lubricant's conductivity, density, specific heat and
-        thermoviscous coefficient and the surfaces' ``effusivity`` (a pair [W s^0.5/(m^2 K)]) are needed with
-        ``thermal`` (InputError naming the missing ones), the Eyring stress with ``non_newtonian``."""
+        [m/s], eta0 [Pa s], alpha [1/Pa], a starved inlet's ``oil_layer`` [m] (None: flooded); the lubricant's
+        conductivity, density, specific heat and thermoviscous coefficient and the surfaces' ``effusivity`` (a pair
+        [W s^0.5/(m^2 K)]) are needed with ``thermal`` (InputError naming the missing ones), the Eyring stress with
+        ``non_newtonian``."""
         from ..ehl.line_thermal import ThermalLineContact
 
         data = {"thermal_conductivity": getattr(lubricant_state, "thermal_conductivity", None),
@@ -261,18 +263,20 @@ class Multigrid(FilmModel):
             eyring_stress=self.eyring_stress if self.non_newtonian else None,
             limiting_shear_stress=self.limiting_shear_stress, limiting_shear_slope=self.limiting_shear_slope,
             viscosity=problem.viscosity, density=problem.density, z=problem.z, p0=problem.p0, domain=problem.domain,
-            elastic=problem.elastic)
+            elastic=problem.elastic, oil_layer=None if oil_layer is None else float(oil_layer))
 
-    def _thermal_films(self, problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity) -> dict:
-        """Films [m] of the thermal and/or non-Newtonian solve (:func:`camcontact.ehl.line_thermal.solve_thermal`)
-        with its isothermal Newtonian films and the solution."""
+    def _thermal_films(self, problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity,
+                       oil_layer=None) -> dict:
+        """Films [m] of the thermal and/or non-Newtonian solve (:func:`camcontact.ehl.line_thermal.solve_thermal`;
+        starved with ``oil_layer`` [m]) with its isothermal Newtonian films and the solution."""
         from ..ehl.line_thermal import solve_thermal
 
         if u1 is None or u2 is None or not (u1 > 0 and u2 > 0):
             raise InputError(f"film model 'multigrid' with the thermal / non-Newtonian solver needs both surface "
                              f"speeds > 0 (u1 = {u1!r}, u2 = {u2!r} m/s): the surfaces must move through the contact "
                              "in the same direction")
-        contact = self.thermal_contact(problem, R, w, E_reduced, u1, u2, eta0, alpha, lubricant_state, effusivity)
+        contact = self.thermal_contact(problem, R, w, E_reduced, u1, u2, eta0, alpha, lubricant_state, effusivity,
+                                       oil_layer)
         solution = solve_thermal(contact, self.levels, thermal=self.thermal, non_newtonian=self.non_newtonian,
                                  tolerance=self.tolerance, strict=self.strict)
         scale = solution.scales["h_scale"]

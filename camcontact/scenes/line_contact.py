@@ -22,7 +22,8 @@ boundary friction of the asperities in the friction). Friction is per unit lengt
 curve (friction against speed) is a sweep of the scene: :func:`camcontact.scenes.stribeck.stribeck_sweep`.
 
 Starvation: ``LineContact.oil_layer`` (the lubricant layer ahead of the contact) with the film model
-``multigrid`` solves the starved contact (:func:`camcontact.ehl.line_starved.solve_starved`); a formula film
+``multigrid`` solves the starved contact (:func:`camcontact.ehl.line_starved.solve_starved`; with ``thermal`` /
+``non_newtonian`` the starved thermal solve of :func:`camcontact.ehl.line_thermal.solve_thermal`); a formula film
 model refuses the layer (the formulas are for flooded contacts).
 """
 
