@@ -23,7 +23,10 @@ at 122 deg with 720 steps and 5 % slip). Measured (medians of 3, 2026-11-28, wit
 it; two runs, the second with the Couette factor in the march too): isothermal 5.9 / 7.9 s, thermal 22.4 / 26.4 s
 rolling and 20.8 / 24.2 s with 5 % slip (energy 15.9-18.5 s; the isothermal march's own spread says how noisy the
 machine was), no step unconverged; h_min 651 / 638 nm against 671 / 660 nm isothermal, the film up to 13 / 20 K warmer
-(with the viscosity uniform across the film, another day: 9.5 s, 23.8 s and 21.2 s, energy 14.1-14.2 s). In the plot,
+(with the viscosity uniform across the film, another day: 9.5 s, 23.8 s and 21.2 s, energy 14.1-14.2 s). With the
+energy equation carrying the flow across the film's layers (2026-11-29): isothermal 6.1 / 6.3 s, thermal 22.7 s rolling
+and 23.7 s with 5 % slip (energy 15.8 / 18.5 s), h_min 652 / 639 nm, the film up to 13 / 20 K warmer, no step
+unconverged. In the plot,
 the rolling case's largest film temperature rise jitters by a few kelvin from step to step: at level 8 the energy
 equation runs on every second node (at most 900, ``line_thermal.LAYER_NODES``) and the peak behind the spike falls on
 or between them; it does not change with the film's cycles or tolerance (V or F, 1e-6 or 1e-8: the same to 0.01 K),

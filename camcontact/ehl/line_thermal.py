@@ -27,7 +27,7 @@ A starved inlet (``ThermalLineContact.oil_layer``) is solved as the isothermal o
 (:mod:`camcontact.ehl.line_starved`): the meniscus where the thermal film of the shorter inlet carries exactly the
 supplied layer. Measured (steel rollers, 200 kN/m, u_m 5 m/s, S = 1, Eyring 5 MPa, level 6; layers 0.8, 0.5 and 0.2
 of the flooded h_c): the film is the layer's (h_c/h_c,iso of the isothermal starved contact 0.975, 0.965, 0.961;
-flooded 0.886), the film temperature peaks 97, 87, 77 K (flooded 113 K) and the traction rises to 0.037, 0.043, 0.053
+flooded 0.888), the film temperature peaks 97, 87, 77 K (flooded 113 K) and the traction rises to 0.037, 0.043, 0.053
 (flooded 0.029): a starved inlet holds less lubricant to heat, and the thinner, cooler film shears harder; 8-16
 thermal solves, 2-3 s.
 
@@ -55,8 +55,8 @@ Models (equations in :mod:`camcontact.ehl._thermal_kernels`):
   where the bound holds the profile are reported (``profile_bounded``, the record's message), and their films depend
   on it (measured: a Newtonian film at S = 1.5, u_m 5 m/s, p_h 1.9 GPa, h_c/h_c,iso 0.69 with the bound 2 and not
   converged, 0.82 with the bound 0.5). Where the iteration with the viscosity varying across the film does not
-  converge and the uniform one does (measured at level 7: 5 of 54 heavy-sliding contacts), :func:`solve_thermal`
-  returns the uniform one, with ``cross_film`` False and the record saying so.
+  converge and the uniform one does (measured at level 7: 2 of 54 contacts, Newtonian films in heavy sliding),
+  :func:`solve_thermal` returns the uniform one, with ``cross_film`` False and the record saying so.
 * **Simplifications (camcontact's, stated)**: density and heat capacity do not depend on temperature
   or pressure; no compression heating (alpha_T T u dp/dx) and no conduction along x; downstream of the film rupture
   the film is treated as full (it no longer affects the pressure); the inlet lubricant and both surfaces enter at T0.
@@ -65,14 +65,19 @@ Models (equations in :mod:`camcontact.ehl._thermal_kernels`):
 
 Validation (tests): in the isothermal Newtonian limit phi = 1 and the solution is the isothermal solver's, node for
 node. The film energy and viscosity profile reproduce Nahme's closed form of a heated Couette film (peak 4e-6, heat
-4e-5 off; the uniform viscosity: 6 % and 4 %). The thermal film reduction of pure rolling lies 5-11 % above the inlet
-shear-heating factor of Murch & Wilson (1975) over thermal loadings L_m = 0.2-3.4 (the reduction 1 - phi_T itself is
-49-80 % of theirs; with the viscosity uniform at the film's mean temperature, 4-6 % above and 60-90 %: the cool walls
-carry the inlet's Poiseuille flow); with sliding it falls less than Wilson & Sheu's (1983) and Gupta et al.'s (1992,
-as Zhu & Cheng) factors say (L_m = 0.21, S = 1: 0.874 here, 0.775 and 0.544 there, which disagree with each other by
-1.4x), though its reduction grows with sliding as Gupta's does (2.9x the rolling one at S = 1; Gupta: 2.3x). No
-published full TEHL line-contact solution with its complete input data was available to compare with (searched:
-Sadeghi & Sui 1990, Kim & Sadeghi 1992, Ghosh & Hamrock 1985, Hsiao & Hamrock 1992 — abstracts only). A first, cheaper
+4e-5 off; the uniform viscosity: 6 % and 4 %), and the sweeps conserve the energy of a converging inlet with reverse
+flow (within 1 %). The thermal film reduction of pure rolling lies 5-19 % above the inlet shear-heating factor of
+Murch & Wilson (1975) over thermal loadings L_m = 0.2-3.4 (0.959, 0.892, 0.771 against 0.911, 0.812, 0.647: the
+reduction 1 - phi_T itself is 47-65 % of theirs; with the viscosity uniform at the film's mean temperature 0.948,
+0.866, 0.731: the cool walls carry the inlet's Poiseuille flow), and the rolling (Poiseuille) force falls with heating
+by 35-45 % of what Goksem & Hargreaves' (1978) thermal inlet fit says (its isothermal fit within 8 % of this solver);
+with sliding it falls less than Wilson & Sheu's (1983) and Gupta et al.'s (1992; Zhu & Cheng's) factors say (L_m =
+0.21, S = 1: 0.876 here, 0.775 and 0.544 there, which disagree with each other by 1.4x), though its reduction grows
+with sliding as Gupta's does (3.0x the rolling one at S = 1; Gupta: 2.3x). Until 2026-11-29 the energy equation left
+out the flow across the film's layers and did not conserve the inlet's energy; its rolling films were 0.957, 0.879,
+0.718. No published full TEHL line-contact solution with its complete input data was available to compare with
+(searched: Sadeghi & Sui 1990, Kim & Sadeghi 1992, Ghosh & Hamrock 1985, Hsiao & Hamrock 1992, Conry, Wang & Cusano
+1987 — abstracts or nothing). A first, cheaper
 energy model — one mean temperature per node with a quadratic profile across the film, convected with the net flux —
 gave 0.923 for pure rolling at L_m = 0.21 (layered, uniform viscosity: 0.946) and had no more sliding sensitivity; it
 was dropped for the layered one, which resolves the inlet's reverse flow.
@@ -83,7 +88,10 @@ the temperature at sliding contacts, Proc. R. Soc. N.S.W. 76:203–224. Sadeghi,
 Thermal elastohydrodynamic lubrication of rolling/sliding contacts, ASME J. Tribol. 112:189–195. Yang, P. &
 Wen, S. (1990) A generalized Reynolds equation for non-Newtonian thermal elastohydrodynamic lubrication, ASME
 J. Tribol. 112:631–636. Walker, H.F. & Ni, P. (2011) Anderson acceleration for fixed-point iterations, SIAM J.
-Numer. Anal. 49:1715–1735. Murch & Wilson (1975), Wilson & Sheu (1983): :mod:`camcontact.models.film_thermal`.
+Numer. Anal. 49:1715–1735. Goksem, P.G. & Hargreaves, R.A. (1978) The effect of viscous shear heating on both film
+thickness and rolling traction in an EHL line contact, Part I, ASME J. Lubr. Technol. 100:346–358, as Aihara, S.
+(1987) A new running torque formula for tapered roller bearings under axial load, ASME J. Tribol. 109:471–478,
+Eqs. 19–21 print it. Murch & Wilson (1975), Wilson & Sheu (1983): :mod:`camcontact.models.film_thermal`.
 """
 
 from __future__ import annotations

@@ -205,6 +205,37 @@ def test_a_heated_couette_film_follows_nahme_s_closed_form():
     assert peaks[False] < 0.95
 
 
+def test_the_energy_sweeps_conserve_energy_in_a_converging_film_with_reverse_flow():
+    """A rigid inlet wedge h = h_o + x^2/(2R) (R 10 mm, h_o 1 um, x from -0.4 mm to 0) in pure rolling at 5 m/s,
+    carrying 1.3 u h_o (a reverse flow where h > 3.9 h_o), walls held at T0, oil of constant viscosity 0.04 Pa s: the
+    energy the film convects out, E = rho c h int u T dzeta, grows from the first node to the last by the heat
+    generated less the heat into the walls, int (Q - q1 - q2) dx. With the flow across the film's layers (omega =
+    -dG/dx, :func:`layer_fluxes`) the balance holds to 1 % (measured 17.66 against 17.82 W/m, first-order upwinding
+    along x); without it, as before 2026-11-29, the sweeps convected 20.3 W/m out of a balance of -0.2 W/m: the
+    layers of a converging film exchange fluid, and a model that moves each layer along its own zeta loses track of
+    the heat they carry. Reversing the sign of omega breaks it too (23.5 against -21.5, measured)."""
+    zeta, D, D2, weights, integral = _film_points(9)
+    n = 400
+    x = np.linspace(-4e-4, 0.0, n)
+    h = 1e-6 + x**2 / (2 * 0.01)
+    u, eta, rho_c = 5.0, 0.04, 1.74e6
+    flux = 1.3 * u * 1e-6 - u * h  # the Poiseuille flux of a constant total flux
+    args = _sweep_inputs(n=n)
+    args.update(dx=float(x[1] - x[0]), h=h, eta_iso=np.full(n, eta), flux=flux, u1=u, du=0.0, conductivity=0.14,
+                heat_capacity=rho_c, C1=1e-12, C2=1e-12, tolerance=1e-10)
+    sweep = _thermal_kernels.compiled("layer_sweep")
+    for _ in range(30):
+        sweep(1, *args.values())
+        sweep(-1, *args.values())
+    T, q1, q2 = args["T"], args["q1"], args["q2"]
+    velocity = u + 6.0 * (flux / h)[:, None] * zeta * (1.0 - zeta)
+    convected = rho_c * h * np.sum(weights * velocity * T, axis=1)
+    heat = 12.0 * eta * flux**2 / h**3 - q1 - q2
+    balance = np.trapezoid(heat[1:], x[1:])
+    assert convected[-1] - convected[1] == pytest.approx(balance, rel=0.02)
+    assert np.any(velocity < 0.0) and 2.5 < T.max() < 3.5  # reverse flow; measured peak 3.03 K
+
+
 def test_film_profile_integrates_a_varying_viscosity_exactly():
     """inv = eta_ref/eta = 1 + zeta across the film: F0 = zeta + zeta^2/2, F1 = zeta^2/2 + zeta^3/3, zeta* = 5/9,
     C_P = -int (zeta - 5/9)^2 (1 + zeta) = -13/108 (by hand; -1/8 for a uniform film of the same mean inv), and the
