@@ -66,9 +66,11 @@ Models (equations in :mod:`camcontact.ehl._thermal_kernels`):
 Validation (tests): in the isothermal Newtonian limit phi = 1 and the solution is the isothermal solver's, node for
 node. The film energy and viscosity profile reproduce Nahme's closed form of a heated Couette film (peak 4e-6, heat
 4e-5 off; the uniform viscosity: 6 % and 4 %), and the sweeps conserve the energy of a converging inlet with reverse
-flow (within 1 %). The thermal film reduction of pure rolling lies 5-19 % above the inlet shear-heating factor of
-Murch & Wilson (1975) over thermal loadings L_m = 0.2-3.4 (0.959, 0.892, 0.771 against 0.911, 0.812, 0.647: the
-reduction 1 - phi_T itself is 47-65 % of theirs; with the viscosity uniform at the film's mean temperature 0.948,
+flow (within 1 %) and match an independent conservative finite-volume solution of it on 160 layers (peak 0.25 %,
+mean temperature along x 0.3 %; tests/unit/test_line_thermal_energy_reference.py). The thermal film reduction of
+pure rolling lies 5-19 % above the inlet shear-heating factor of Murch & Wilson (1975) over thermal loadings
+L_m = 0.2-3.4 (0.959, 0.892, 0.771 against 0.911, 0.812, 0.647: the reduction 1 - phi_T itself is 47-65 % of
+theirs; with the viscosity uniform at the film's mean temperature 0.948,
 0.866, 0.731: the cool walls carry the inlet's Poiseuille flow), and the rolling (Poiseuille) force falls with heating
 by 35-45 % of what Goksem & Hargreaves' (1978) thermal inlet fit says (its isothermal fit within 8 % of this solver);
 with sliding it falls less than Wilson & Sheu's (1983) and Gupta et al.'s (1992; Zhu & Cheng's) factors say (L_m =
