@@ -8,6 +8,8 @@ and what is allowed.
 
 from __future__ import annotations
 
+import warnings
+
 __all__ = [
     "CamcontactWarning",
     "CaseTimeout",
@@ -23,6 +25,7 @@ __all__ = [
     "SweepInterruptedWarning",
     "UnknownModelError",
     "ValidityWarning",
+    "not_converged",
 ]
 
 
@@ -99,3 +102,12 @@ class ValidityWarning(CamcontactWarning):
 class SweepInterruptedWarning(CamcontactWarning):
     """A sweep stopped early (SIGINT, a broken process pool): the table holds the finished cases,
     ``frame.attrs["missing_cases"]`` lists the others, and ``stream=..., resume=True`` runs them."""
+
+
+def not_converged(text: str, record: object, *, strict: bool, stacklevel: int = 2) -> None:
+    """The end of a solve that did not converge: :class:`ConvergenceError` with ``record`` (its convergence
+    record) when ``strict``, else a :class:`ConvergenceWarning` with ``text`` attributed ``stacklevel`` frames up
+    from the caller (as :func:`warnings.warn` counts them from the caller)."""
+    if strict:
+        raise ConvergenceError(text, record)
+    warnings.warn(text, ConvergenceWarning, stacklevel=stacklevel + 1)

@@ -10,13 +10,12 @@ ConvergenceError with ``strict``.
 from __future__ import annotations
 
 import time
-import warnings
 from collections.abc import Callable, Iterable, Mapping
 from typing import Any
 
 import attrs
 
-from ..errors import ConvergenceError, ConvergenceWarning
+from ..errors import ConvergenceError, not_converged
 
 __all__ = ["describe_settings", "run_ladder"]
 
@@ -65,8 +64,6 @@ def run_ladder(settings: Any, robust: Iterable[Mapping[str, Any]], solve: Callab
         kept = attrs.evolve(kept, record=attrs.evolve(kept.record, message=note,
                                                       wall_time=time.perf_counter() - start))
     if not kept.record.converged:
-        text = f"{label.rstrip(')')}, {size}): not converged: {kept.record.message}"
-        if strict:
-            raise ConvergenceError(text, kept.record)
-        warnings.warn(text, ConvergenceWarning, stacklevel=3)
+        not_converged(f"{label.rstrip(')')}, {size}): not converged: {kept.record.message}", kept.record,
+                      strict=strict, stacklevel=3)
     return kept

@@ -17,7 +17,7 @@ import time
 
 import numpy as np
 
-from ..errors import ConvergenceError, ConvergenceWarning, InputError
+from ..errors import InputError, not_converged
 from .film_formulas import moes_line_film
 from .line_operator import LineGrid
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
@@ -223,10 +223,6 @@ def solve_reference(
     )
     solution = LineEHLSolution(problem=problem, level=level or 0, X=grid.X, P=P, H=H, H0=float(H0), record=record)
     if not converged:
-        text = f"line EHL reference solver did not converge (M = {problem.M:.4g}, L = {problem.L:.4g}, n = {n}): {message}"
-        if strict:
-            raise ConvergenceError(text, record)
-        import warnings
-
-        warnings.warn(text, ConvergenceWarning, stacklevel=2)
+        not_converged(f"line EHL reference solver did not converge (M = {problem.M:.4g}, L = {problem.L:.4g}, "
+                      f"n = {n}): {message}", record, strict=strict)
     return solution

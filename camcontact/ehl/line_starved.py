@@ -66,7 +66,7 @@ import warnings
 import attrs
 import numpy as np
 
-from ..errors import ConvergenceError, ConvergenceWarning, InputError
+from ..errors import ConvergenceError, ConvergenceWarning, InputError, not_converged
 from .deformation import Deformation
 from .line_multigrid import MultigridSettings, solve_multigrid
 from .line_problem import LineEHLProblem
@@ -200,10 +200,8 @@ def _result(problem, solution, supply, start, message, converged, strict,
         message=f"{message}; last solve: {record.message}" if record.message else message, tolerance=record.tolerance,
     )
     if not converged:
-        text = f"line EHL starved inlet (M = {problem.M:.4g}, L = {problem.L:.4g}): not converged: {record.message}"
-        if strict:
-            raise ConvergenceError(text, record)
-        warnings.warn(text, ConvergenceWarning, stacklevel=3)
+        not_converged(f"line EHL starved inlet (M = {problem.M:.4g}, L = {problem.L:.4g}): not converged: "
+                      f"{record.message}", record, strict=strict, stacklevel=3)
     flux = wet_flux(solution)
     P, H = solution.P, np.maximum(solution.H, 1e-300)
     theta = np.ones_like(P)

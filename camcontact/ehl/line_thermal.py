@@ -106,7 +106,7 @@ import warnings
 import attrs
 import numpy as np
 
-from ..errors import ConvergenceError, ConvergenceWarning, InputError
+from ..errors import ConvergenceError, ConvergenceWarning, InputError, not_converged
 from ..units import non_negative, number_field, positive
 from . import _thermal_kernels
 from .line_multigrid import solve_multigrid
@@ -586,10 +586,7 @@ def solve_thermal(
     else:
         result = _flooded(contact, levels, options)
     if not result.record.converged:
-        text = f"thermal line EHL did not converge: {result.record.message}"
-        if strict:
-            raise ConvergenceError(text, result.record)
-        warnings.warn(text, ConvergenceWarning, stacklevel=2)
+        not_converged(f"thermal line EHL did not converge: {result.record.message}", result.record, strict=strict)
     return result
 
 
