@@ -236,7 +236,8 @@ class ThermalLineSolution:
     thermal: bool  #: the energy equation was solved
     rheology: str  #: "newtonian" or "eyring"
     ehl: LineEHLSolution  #: final solution (its ``flow_factor`` the converged phi)
-    isothermal: LineEHLSolution  #: isothermal Newtonian solution of the same problem and grid
+    #: isothermal Newtonian solution of the same problem and grid (starved: of the same supply, on its own grid)
+    isothermal: LineEHLSolution
     x: np.ndarray = attrs.field(repr=False, eq=False)  #: [m]
     p: np.ndarray = attrs.field(repr=False, eq=False)  #: pressure [Pa]
     h: np.ndarray = attrs.field(repr=False, eq=False)  #: film [m]
