@@ -11,7 +11,9 @@ slide-to-roll ratios S = 0, 0.1, 0.25, 0.5, 1 (quick: 0, 0.5, 1). Per S and grid
   al. (Zhu & Cheng) (:mod:`camcontact.models.film_thermal`) and the lumped thermal Eyring traction (Hertz pressure,
   flash and film temperature) — the cost of the isothermal solve plus the formulas;
 * ``thermal``: :func:`camcontact.ehl.line_thermal.solve_thermal` (energy equation, Eyring film): films, traction,
-  temperature, iterations, and its time over the isothermal solve's (the issue's target: <= 10 at level 10).
+  temperature, iterations, and its time over the isothermal solve's (the issue's target: <= 10 at level 10);
+* ``thermal starved``: the same with a starved inlet, an oil layer of half the thermal flooded central film
+  (``ThermalLineContact.oil_layer``; its h_c / iso against the isothermal starved film of the same layer).
 
     python benchmarks/thermal_ehl_cost.py            # levels 8 and 10, 3 repeats
     python benchmarks/thermal_ehl_cost.py --quick    # level 6, one repeat (the tests run this)
@@ -25,6 +27,7 @@ import sys
 import warnings
 from pathlib import Path
 
+import attrs
 import numpy as np
 import pandas as pd
 
@@ -41,6 +44,8 @@ SLIDE_ROLL = (0.0, 0.1, 0.25, 0.5, 1.0)
 QUICK_SLIDE_ROLL = (0.0, 0.5, 1.0)
 TAU0 = 5e6
 FACTORS = {"murch_wilson": "MW", "wilson_sheu": "WS", "zhu_cheng": "ZC"}
+#: the starved rung's oil layer, a fraction of the thermal flooded central film
+STARVED_LAYER = 0.5
 
 
 def contact(S: float) -> ThermalLineContact:
@@ -95,6 +100,13 @@ def rows_of(S: float, level: int, repeats: int) -> list[dict]:
                         "max film rise [K]": thermal.max_temperature_rise, "iterations": thermal.record.cycles,
                         "converged": thermal.record.converged, "time [s]": t_thermal,
                         "time / isothermal [-]": t_thermal / t_iso})
+    layer = STARVED_LAYER * thermal.h_c
+    starved, t_starved = timed(lambda: solve_thermal(attrs.evolve(c, oil_layer=layer), level), repeats)
+    rows.append(base | {"rung": "thermal starved", "layer [nm]": 1e9 * layer, "h_c [nm]": 1e9 * starved.h_c,
+                        "h_min [nm]": 1e9 * starved.h_min, "h_c / iso [-]": starved.film_reduction,
+                        "traction [-]": starved.traction_coefficient,
+                        "max film rise [K]": starved.max_temperature_rise, "converged": starved.record.converged,
+                        "time [s]": t_starved, "time / isothermal [-]": t_starved / t_iso})
     return rows
 
 
@@ -114,7 +126,7 @@ def plot(frame: pd.DataFrame, path: Path) -> None:
         films.plot(formula["S [-]"], formula[f"h_c / iso {short} [-]"], "s--", label=name)
     films.set(xlabel="slide-to-roll ratio S", ylabel="h_c / h_c isothermal", title="Thermal film reduction")
     films.legend(fontsize=8)
-    for rung, style in (("isothermal", "^:"), ("formula", "s--"), ("thermal", "o-")):
+    for rung, style in (("isothermal", "^:"), ("formula", "s--"), ("thermal", "o-"), ("thermal starved", "v-.")):
         part = finest[finest["rung"] == rung]
         traction.plot(part["S [-]"], part["traction [-]"], style, label=f"{rung} ({part['time [s]'].median():.2f} s)")
     traction.set(xlabel="slide-to-roll ratio S", ylabel="traction coefficient", title="Eyring traction (5 MPa)")

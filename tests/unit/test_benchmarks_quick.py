@@ -142,17 +142,21 @@ def test_cavitation_cost_quick(tmp_path):
 
 
 def test_thermal_ehl_cost_quick(tmp_path):
-    """benchmarks/thermal_ehl_cost.py --quick: the three rungs (isothermal, formula factors, thermal solver) for the
-    film and the traction at three slide-to-roll ratios (timings never asserted)."""
+    """benchmarks/thermal_ehl_cost.py --quick: the rungs (isothermal, formula factors, thermal solver, thermal solver
+    with a starved inlet) for the film and the traction at three slide-to-roll ratios (timings never asserted)."""
     frame = _load("thermal_ehl_cost").main(["--quick", "--out", str(tmp_path)])
     assert (tmp_path / "thermal_ehl_cost.csv").exists()
-    assert list(frame["rung"]) == ["isothermal", "formula", "thermal"] * 3
+    assert list(frame["rung"]) == ["isothermal", "formula", "thermal", "thermal starved"] * 3
     thermal = frame[frame["rung"] == "thermal"]
     assert thermal["converged"].all() and (thermal["h_c / iso [-]"] < 1.0).all()
     # the thermal solver's traction is below the isothermal one once the film heats (S > 0)
     sliding = frame[frame["S [-]"] > 0].set_index(["S [-]", "rung"])["traction [-]"]
     for S in (0.5, 1.0):
         assert 0 < sliding[(S, "thermal")] < sliding[(S, "isothermal")]
+        # the starved film, half as thick and less heated in its inlet, shears harder than the flooded one
+        assert sliding[(S, "thermal starved")] > sliding[(S, "thermal")]
+    starved = frame[frame["rung"] == "thermal starved"]
+    assert starved["converged"].all() and (starved["h_c [nm]"] < 0.6 * thermal["h_c [nm]"].to_numpy()).all()
 
 
 def test_thermal_cam_cycle_quick(tmp_path):
