@@ -130,6 +130,27 @@ def profile_offset(beta, deviation):
 
 
 @helper
+def inverse_viscosity(T, i, t, beta, cross, weights, inv):
+    """inv_j = eta_iso/eta at node i's film points, in place: exp(beta (t + d_j)) for the film's mean temperature
+    rise t [K] and the points' present rises d_j above the mean of T[i] (bounded, :func:`profile_offset`); d_j = 0
+    without ``cross`` (the viscosity uniform at the mean)."""
+    N = inv.shape[0] - 1
+    present = 0.0
+    if cross:
+        for j in range(N + 1):
+            present += weights[j] * T[i, j]
+    for j in range(N + 1):
+        inv[j] = math.exp(beta * t + (profile_offset(beta, T[i, j] - present) if cross else 0.0))
+
+
+@helper
+def point_heat(tau_c, delta, inv_j, du, h, total, Phi, eta_iso):
+    """Dissipation per volume [W/m^3] at a film point (module docstring): stress tau_c + delta times the shear rate
+    inv_j (du/(h F0(1)) + Phi delta/eta_iso), inv_j = eta_iso/eta there, total = F0(1)."""
+    return (tau_c + delta) * inv_j * (du / (h * total) + Phi * delta / eta_iso)
+
+
+@helper
 def film_profile(inv, eta_ref, h, flux, du, tau0, limit, zeta, integral, weights, F0, F1):
     """The film of a viscosity varying across it, eta(zeta) = eta_ref / inv(zeta) at the film points zeta_j
     (Yang & Wen 1990, in the Reynolds–Eyring limit of Conry et al. 1987: the stress's Poiseuille part is a small
@@ -213,12 +234,7 @@ def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
     N = zeta.shape[0] - 1
     n = h.shape[0]
     hi = h[i]
-    present = 0.0
-    if cross:
-        for j in range(N + 1):
-            present += weights[j] * T[i, j]
-    for j in range(N + 1):
-        inv[j] = math.exp(beta * t + (profile_offset(beta, T[i, j] - present) if cross else 0.0))
+    inverse_viscosity(T, i, t, beta, cross, weights, inv)
     tau_c, Phi, total, C_P, z_star = film_profile(inv, eta_iso[i], hi, flux[i], du, tau0, limit[i], zeta, integral,
                                                   weights, F0, F1)
     gradient = flux[i] * eta_iso[i] / (Phi * hi * hi * hi * C_P)
@@ -261,7 +277,7 @@ def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
             A[j, j] -= upwind * across / gap
             A[j, j + 1] += upwind * across / gap
         A[j, j] += carry
-        b[j] = (tau_c + delta) * inv[j] * (du / (hi * total) + Phi * delta / eta_iso[i]) + carry * neighbour
+        b[j] = point_heat(tau_c, delta, inv[j], du, hi, total, Phi, eta_iso[i]) + carry * neighbour
     x, ok = solve_dense(A, b)
     mean = 0.0
     for j in range(N + 1):
@@ -420,8 +436,7 @@ def film_fields(eta_iso, h, flux, limit, du, tau0, beta, T, cross, zeta, integra
         mean = 0.0
         for j in range(N + 1):
             mean += weights[j] * T[i, j]
-        for j in range(N + 1):
-            inv[j] = math.exp(beta * mean + (profile_offset(beta, T[i, j] - mean) if cross else 0.0))
+        inverse_viscosity(T, i, mean, beta, cross, weights, inv)
         hi = h[i]
         if hi <= 0.0:
             tau[i], phi[i], Q[i], a[i], total[i], m[i] = 0.0, 1.0, 0.0, 1.0, 1.0, 0.5
@@ -432,7 +447,7 @@ def film_fields(eta_iso, h, flux, limit, du, tau0, beta, T, cross, zeta, integra
         heat = 0.0
         for j in range(N + 1):
             delta = gradient * hi * (zeta[j] - z_star)
-            heat += weights[j] * (tau_c + delta) * inv[j] * (du / (hi * F_total) + Phi * delta / eta_iso[i])
+            heat += weights[j] * point_heat(tau_c, delta, inv[j], du, hi, F_total, Phi, eta_iso[i])
         tau[i] = tau_c + gradient * hi * (0.5 - z_star)
         phi[i] = Phi
         Q[i] = heat * hi

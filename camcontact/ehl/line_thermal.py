@@ -408,7 +408,8 @@ def _collocation(points: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.nd
 @functools.lru_cache(maxsize=4)
 def _film_points(points: int) -> tuple[np.ndarray, ...]:
     """(zeta, D, D2, weights, integral) of :func:`_collocation` and :func:`_antiderivative_matrix` (read-only)."""
-    arrays = (*_collocation(points), _antiderivative_matrix(_collocation(points)[0]))
+    collocation = _collocation(points)
+    arrays = (*collocation, _antiderivative_matrix(collocation[0]))
     for array in arrays:
         array.flags.writeable = False
     return arrays
@@ -495,9 +496,10 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
     k = (contact.eta0 * abs(du) / (tau0 * total * np.maximum(h, 1e-300)) if tau0 > 0.0 and du != 0.0
          else np.zeros(n))
     c = (contact.u1 + du * m) / contact.u_m if cross_film else np.ones(n)
-    spread = beta * np.abs(profile - (profile @ weights)[:, None]).max(axis=1)
+    Tm = profile @ weights
+    spread = beta * np.abs(profile - Tm[:, None]).max(axis=1)
     bounded = spread > _thermal_kernels.PROFILE_BOUND if cross_film else np.zeros(n, dtype=bool)
-    return {"Tm": profile @ weights, "T1": profile[:, 0], "T2": profile[:, -1], "tau": tau, "phi": phi * a,
+    return {"Tm": Tm, "T1": profile[:, 0], "T2": profile[:, -1], "tau": tau, "phi": phi * a,
             "used": used, "a": a, "k": k, "c": c, "Q": Q, "x": X * b, "p": P * p_h, "h": h, "wet": wet,
             "bounded": bounded, "failed": failed, "unsettled": unsettled,
             "failure": failure if failed or unsettled else ""}

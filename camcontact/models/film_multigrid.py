@@ -178,13 +178,13 @@ class Multigrid(FilmModel):
         solution = values.get("ehl_solution")
         bounded = getattr(solution, "profile_bounded", None)
         count = 0 if bounded is None else int(np.count_nonzero(bounded & solution.wet))
-        if count:
-            from ..ehl.line_thermal import profile_bound_note
+        if count or getattr(solution, "cross_film", True) is False:
+            from ..ehl.line_thermal import UNIFORM_FALLBACK, profile_bound_note
 
-            messages.append(profile_bound_note(count))
-        if getattr(solution, "cross_film", True) is False:
-            messages.append("the film's viscosity is uniform across the film at its mean temperature: the thermal "
-                            "solve with the viscosity varying across it did not converge (heavy sliding)")
+            if count:
+                messages.append(profile_bound_note(count))
+            if solution.cross_film is False:
+                messages.append(UNIFORM_FALLBACK)
         return messages
 
     def evaluate(self, R, w, E_reduced, u_m, eta0, alpha, lubricant_state=None, density_law="dowson_higginson",
