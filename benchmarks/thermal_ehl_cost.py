@@ -13,7 +13,9 @@ slide-to-roll ratios S = 0, 0.1, 0.25, 0.5, 1 (quick: 0, 0.5, 1). Per S and grid
 * ``thermal``: :func:`camcontact.ehl.line_thermal.solve_thermal` (energy equation, Eyring film): films, traction,
   temperature, iterations, and its time over the isothermal solve's (the issue's target: <= 10 at level 10);
 * ``thermal starved``: the same with a starved inlet, an oil layer of half the thermal flooded central film
-  (``ThermalLineContact.oil_layer``; its h_c / iso against the isothermal starved film of the same layer).
+  (``ThermalLineContact.oil_layer``; its h_c / iso against the isothermal starved film of the same layer);
+* ``thermal expanding``: the flooded thermal solve with the compression work and thermal expansion of an oil of
+  expansivity 6.5e-4 1/K entering at 353 K (``ThermalLineContact.thermal_expansivity``).
 
     python benchmarks/thermal_ehl_cost.py            # levels 8 and 10, 3 repeats
     python benchmarks/thermal_ehl_cost.py --quick    # level 6, one repeat (the tests run this)
@@ -46,6 +48,8 @@ TAU0 = 5e6
 FACTORS = {"murch_wilson": "MW", "wilson_sheu": "WS", "zhu_cheng": "ZC"}
 #: the starved rung's oil layer, a fraction of the thermal flooded central film
 STARVED_LAYER = 0.5
+#: the expanding rung's expansivity [1/K] and inlet temperature [K]
+EXPANSIVITY, INLET_TEMPERATURE = 6.5e-4, 353.0
 
 
 def contact(S: float) -> ThermalLineContact:
@@ -107,6 +111,14 @@ def rows_of(S: float, level: int, repeats: int) -> list[dict]:
                         "traction [-]": starved.traction_coefficient,
                         "max film rise [K]": starved.max_temperature_rise, "converged": starved.record.converged,
                         "time [s]": t_starved, "time / isothermal [-]": t_starved / t_iso})
+    expanding_contact = attrs.evolve(c, thermal_expansivity=EXPANSIVITY, temperature=INLET_TEMPERATURE)
+    expanding, t_expanding = timed(lambda: solve_thermal(expanding_contact, level), repeats)
+    rows.append(base | {"rung": "thermal expanding", "h_c [nm]": 1e9 * expanding.h_c,
+                        "h_min [nm]": 1e9 * expanding.h_min, "h_c / iso [-]": expanding.film_reduction,
+                        "traction [-]": expanding.traction_coefficient,
+                        "max film rise [K]": expanding.max_temperature_rise, "iterations": expanding.record.cycles,
+                        "converged": expanding.record.converged, "time [s]": t_expanding,
+                        "time / isothermal [-]": t_expanding / t_iso})
     return rows
 
 
@@ -120,13 +132,16 @@ def plot(frame: pd.DataFrame, path: Path) -> None:
     fig, (films, traction) = plt.subplots(1, 2, figsize=(10, 4))
     thermal = finest[finest["rung"] == "thermal"]
     films.plot(thermal["S [-]"], thermal["h_c / iso [-]"], "o-", label="thermal solver")
+    expanding = finest[finest["rung"] == "thermal expanding"]
+    films.plot(expanding["S [-]"], expanding["h_c / iso [-]"], "d-", label="thermal solver, compression work")
     formula = finest[finest["rung"] == "formula"]
     names = (("MW", "Murch & Wilson (rolling)"), ("WS", "Wilson & Sheu"), ("ZC", "Gupta et al. (Zhu & Cheng)"))
     for short, name in names:
         films.plot(formula["S [-]"], formula[f"h_c / iso {short} [-]"], "s--", label=name)
     films.set(xlabel="slide-to-roll ratio S", ylabel="h_c / h_c isothermal", title="Thermal film reduction")
     films.legend(fontsize=8)
-    for rung, style in (("isothermal", "^:"), ("formula", "s--"), ("thermal", "o-"), ("thermal starved", "v-.")):
+    for rung, style in (("isothermal", "^:"), ("formula", "s--"), ("thermal", "o-"), ("thermal starved", "v-."),
+                        ("thermal expanding", "d-")):
         part = finest[finest["rung"] == rung]
         traction.plot(part["S [-]"], part["traction [-]"], style, label=f"{rung} ({part['time [s]'].median():.2f} s)")
     traction.set(xlabel="slide-to-roll ratio S", ylabel="traction coefficient", title="Eyring traction (5 MPa)")

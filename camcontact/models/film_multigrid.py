@@ -235,7 +235,8 @@ class Multigrid(FilmModel):
         [m/s], eta0 [Pa s], alpha [1/Pa], a starved inlet's ``oil_layer`` [m] (None: flooded); the lubricant's
         conductivity, density, specific heat and thermoviscous coefficient and the surfaces' ``effusivity`` (a pair
         [W s^0.5/(m^2 K)]) are needed with ``thermal`` (InputError naming the missing ones), the Eyring stress with
-        ``non_newtonian``."""
+        ``non_newtonian``; with ``thermal`` a lubricant's thermal expansivity (with its temperature) gives the film's
+        compression work and thermal expansion."""
         from ..ehl.line_thermal import ThermalLineContact
 
         data = {"thermal_conductivity": getattr(lubricant_state, "thermal_conductivity", None),
@@ -255,6 +256,13 @@ class Multigrid(FilmModel):
         if self.non_newtonian and self.eyring_stress is None:
             raise InputError("film model 'multigrid' with the non_newtonian effect needs the Eyring stress "
                              "(the lubricant's eyring_stress, or an Eyring traction model)")
+        # the compression work alpha_T T u dp/dx of a lubricant with a thermal expansivity needs its temperature
+        expansivity = float(getattr(lubricant_state, "thermal_expansivity", 0.0) or 0.0) if self.thermal else 0.0
+        temperature = getattr(lubricant_state, "temperature", None) if expansivity > 0.0 else None
+        if expansivity > 0.0 and temperature is None:
+            raise InputError(f"film model 'multigrid' with the thermal effect: the lubricant's thermal_expansivity = "
+                             f"{expansivity:g} 1/K needs its temperature (the contact's temperature) for the "
+                             "compression work alpha_T T u dp/dx; give one, or drop thermal_expansivity")
         return ThermalLineContact(
             R=R, w=w, E_reduced=E_reduced, u1=float(u1), u2=float(u2), eta0=eta0, alpha=float(alpha),
             beta=float(data["thermoviscous_coefficient"]), conductivity=float(data["thermal_conductivity"]),
@@ -263,7 +271,8 @@ class Multigrid(FilmModel):
             eyring_stress=self.eyring_stress if self.non_newtonian else None,
             limiting_shear_stress=self.limiting_shear_stress, limiting_shear_slope=self.limiting_shear_slope,
             viscosity=problem.viscosity, density=problem.density, z=problem.z, p0=problem.p0, domain=problem.domain,
-            elastic=problem.elastic, oil_layer=None if oil_layer is None else float(oil_layer))
+            elastic=problem.elastic, oil_layer=None if oil_layer is None else float(oil_layer),
+            thermal_expansivity=expansivity, temperature=None if temperature is None else float(temperature))
 
     def _thermal_films(self, problem, R, w, E_reduced, eta0, alpha, lubricant_state, u1, u2, effusivity,
                        oil_layer=None) -> dict:

@@ -143,10 +143,11 @@ def test_cavitation_cost_quick(tmp_path):
 
 def test_thermal_ehl_cost_quick(tmp_path):
     """benchmarks/thermal_ehl_cost.py --quick: the rungs (isothermal, formula factors, thermal solver, thermal solver
-    with a starved inlet) for the film and the traction at three slide-to-roll ratios (timings never asserted)."""
+    with a starved inlet, with compression work) for the film and the traction at three slide-to-roll ratios (timings
+    never asserted)."""
     frame = _load("thermal_ehl_cost").main(["--quick", "--out", str(tmp_path)])
     assert (tmp_path / "thermal_ehl_cost.csv").exists()
-    assert list(frame["rung"]) == ["isothermal", "formula", "thermal", "thermal starved"] * 3
+    assert list(frame["rung"]) == ["isothermal", "formula", "thermal", "thermal starved", "thermal expanding"] * 3
     thermal = frame[frame["rung"] == "thermal"]
     assert thermal["converged"].all() and (thermal["h_c / iso [-]"] < 1.0).all()
     # the thermal solver's traction is below the isothermal one once the film heats (S > 0)
@@ -157,6 +158,12 @@ def test_thermal_ehl_cost_quick(tmp_path):
         assert sliding[(S, "thermal starved")] > sliding[(S, "thermal")]
     starved = frame[frame["rung"] == "thermal starved"]
     assert starved["converged"].all() and (starved["h_c [nm]"] < 0.6 * thermal["h_c [nm]"].to_numpy()).all()
+    # compression work: the rolling film thins more; the sliding films' hot Hertz zones expand and thicken
+    expanding = frame[frame["rung"] == "thermal expanding"].set_index("S [-]")
+    plain = thermal.set_index("S [-]")
+    assert expanding["converged"].all()
+    assert expanding.loc[0.0, "h_c / iso [-]"] < plain.loc[0.0, "h_c / iso [-]"]
+    assert expanding.loc[1.0, "h_c / iso [-]"] > plain.loc[1.0, "h_c / iso [-]"]
 
 
 def test_thermal_cam_cycle_quick(tmp_path):

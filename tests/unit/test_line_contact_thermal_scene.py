@@ -133,3 +133,25 @@ def test_a_starved_thermal_contact_is_solved_with_its_layer(contact):
     assert float(flooded["thermal_factor"]) < float(starved["thermal_factor"]) < 1.0
     assert float(starved["traction_coefficient"]) > 1.2 * float(flooded["traction_coefficient"])
     assert float(starved["traction_temperature_rise"]) < float(flooded["traction_temperature_rise"])
+
+
+def test_the_lubricant_s_thermal_expansivity_reaches_the_solver(contact):
+    """Lubricant.thermal_expansivity (default None: not modelled) gives the thermal solve the compression work and
+    thermal expansion at the contact's oil temperature; a contact at no temperature (an oil given by one viscosity,
+    eta0) cannot do compression work, and the film step says so."""
+    assert contact.lubricant.thermal_expansivity is None
+    oil = attrs.evolve(contact.lubricant, thermal_expansivity="6.5e-4 1/K")
+    outputs = OUTPUTS + ["film_solution", "thermal_factor"]
+    plain = _run(contact, {"thermal", "non_newtonian"}, outputs=outputs)
+    result = _run(attrs.evolve(contact, lubricant=oil), {"thermal", "non_newtonian"}, outputs=outputs)
+    solution = result["film_solution"]
+    assert solution.contact.thermal_expansivity == pytest.approx(6.5e-4)
+    assert solution.contact.temperature == pytest.approx(358.15)  # the scene's oil temperature, 85 degC
+    assert plain["film_solution"].contact.thermal_expansivity == 0.0
+    assert solution.record.converged and result["film_validity"] == "ok"
+    assert float(result["thermal_factor"]) != pytest.approx(float(plain["thermal_factor"]), abs=1e-3)
+    bare = cc.Lubricant(eta0="0.1 Pa*s", alpha="2e-8 1/Pa", thermoviscous_coefficient="0.03 1/K",
+                        thermal_conductivity="0.14 W/(m*K)", density="870 kg/m^3", specific_heat="1900 J/(kg*K)",
+                        thermal_expansivity="6.5e-4 1/K")
+    with pytest.raises(cc.InputError, match="thermal_expansivity = 0.00065 1/K needs its temperature"):
+        _run(attrs.evolve(contact, lubricant=bare, temperature=None), {"thermal"}, outputs=["h_c"], strict=True)
