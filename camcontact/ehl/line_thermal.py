@@ -28,8 +28,8 @@ A starved inlet (``ThermalLineContact.oil_layer``) is solved as the isothermal o
 supplied layer. Measured (steel rollers, 200 kN/m, u_m 5 m/s, S = 1, Eyring 5 MPa, level 6; layers 0.8, 0.5 and 0.2
 of the flooded h_c): the film is the layer's (h_c/h_c,iso of the isothermal starved contact 0.975, 0.965, 0.961;
 flooded 0.888), the film temperature peaks 97, 87, 77 K (flooded 113 K) and the traction rises to 0.037, 0.043, 0.053
-(flooded 0.029): a starved inlet holds less lubricant to heat, and the thinner, cooler film shears harder; 8-16
-thermal solves, 2-3 s.
+(flooded 0.029): a starved inlet holds less lubricant to heat, and the thinner, cooler film shears harder; 6-10
+thermal solves (8-16 with the bracket's fixed steps before 2026-11-29).
 
 Levels above :data:`NESTED_FROM` iterate on coarser levels first (nested iteration). A multigrid solve that fails
 with the mixed flow factors is retried with shorter plain steps; the record says what happened.

@@ -76,3 +76,28 @@ def test_the_starved_film_carries_exactly_the_supply(fraction, flooded):
 def test_less_supply_moves_the_meniscus_towards_the_contact(flooded):
     menisci = [_starved(fraction, flooded)[1].inlet_meniscus for fraction in (0.9, 0.6, 0.3)]
     assert menisci[0] < menisci[1] < menisci[2] < -1.0
+
+
+def test_the_meniscus_bracket_follows_the_secant_of_its_trials():
+    """find_meniscus on the flux curve a thermal starved solve measured (steel rollers, S = 0, a layer of 0.2 of the
+    flooded film, level 6: F/supply - 1 at eleven menisci from X = -3.1 to -1.06, interpolated monotonically in
+    ln(-1 - X)): the bracket's secant steps reach the root in 8 calls; the fixed steps of 0.3 before 2026-11-29 took
+    14 (measured in the solver: 16 thermal solves then, 10 now)."""
+    from scipy.interpolate import PchipInterpolator
+
+    from camcontact.ehl.line_starved import find_meniscus
+
+    measured = [(-3.1, 5.08323), (-2.47, 4.78062), (-2.029, 4.31445), (-1.7203, 3.70377), (-1.5042, 3.01087),
+                (-1.3529, 2.30922), (-1.2471, 1.65603), (-1.1729, 1.08364), (-1.1211, 0.6035), (-1.0847, 0.21352),
+                (-1.0593, -0.09551)]
+    ln_d = np.log([-1.0 - X for X, _ in measured])[::-1]
+    curve = PchipInterpolator(ln_d, [g for _, g in measured][::-1], extrapolate=True)
+    calls = []
+
+    def flux_error(X_m):
+        calls.append(X_m)
+        return float(curve(math.log(-1.0 - X_m)))
+
+    X_m, error = find_meniscus(flux_error, -3.1, 5.08323, target=1e-4, supply=1.0, record=None, caller="test")
+    assert abs(error) <= 1e-4 and X_m == pytest.approx(-1.0669, abs=2e-4)
+    assert len(calls) <= 8  # measured 8; fixed steps: 14
