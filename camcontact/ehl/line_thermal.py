@@ -579,8 +579,9 @@ def solve_thermal(
         Stop when the mean of |ln F_new - ln F| + |ln c_new - ln c| over the wet nodes (F the flow factors at the
         current pressure, c the Couette factors) is below ``flow_tolerance`` and either its largest value is too, or
         H_c, H_min and the traction force changed by less than ``output_tolerance`` (relative; the traction's against
-        at least :data:`TRACTION_FLOOR` of the load) from the previous iteration. (The largest change stays at a few nodes of the outlet constriction, where the film moves from
-        iteration to iteration: measured 0.003-0.04 when the films and the traction have settled to 1e-4.)
+        at least :data:`TRACTION_FLOOR` of the load) from the previous iteration. (The largest change stays at a few
+        nodes of the outlet constriction, where the film moves from iteration to iteration: measured 0.003-0.04 when
+        the films and the traction have settled to 1e-4.)
     relaxation : float
         Mixing parameter of the Anderson iteration on (ln a, ln k, ln c) (the plain relaxation of its first step and
         of the shortened steps after a failed solve), in (0, 1].
