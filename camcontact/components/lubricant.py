@@ -164,10 +164,12 @@ class Lubricant(Component):
         (film model ``multigrid``, :class:`camcontact.ehl.line_thermal.ThermalLineContact`): the film does the
         compression work α_T T u dp/dx (heats as it runs into the pressure, cools as it leaves it) and expands as it
         heats, ρ = ρ_DH(p) exp(−α_T (T − T0)). Mineral oils: 6–7e-4 1/K at ambient pressure (6.5e-4 in the thermal
-        EHL analyses since Sadeghi & Dow 1987). Needs the oil's temperature (the contact's ``temperature``).
+        EHL analyses since Sadeghi & Dow 1987). Needs the oil's temperature (the contact's ``temperature``). The
+        steady line-contact solve takes it; the cam turn's transient march refuses it (InputError from the film
+        step).
         Default None: not modelled. It is not on by default because the one constant α_T of that law, right in
         the inlet, overstates the expansion of a hot Hertz zone at GPa pressures, where the expansivity of real
-        oils is lower, and there it raises a sliding film's h_c by 6–25 % (measured, S = 1; README).
+        oils is lower, and there it raises a sliding film's h_c by 6–16 % (measured, S = 1; README).
     eyring_stress : Quantity or str, optional
         Eyring stress τ0 [pressure] (> 0) of the film's rheology (Johnson & Tevaarwerk 1977), used by the
         ``non_newtonian`` effect; default: the traction model's (5 MPa, a mineral-oil order of magnitude).

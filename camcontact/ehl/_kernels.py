@@ -35,7 +35,8 @@ u_e h = c u_m h: Yang & Wen's 1990 generalised Reynolds equation, its rho*/rho; 
 content theta rho H); (1, 0, 1) for the isothermal Newtonian film. The thermal and non-Newtonian solver
 (:mod:`camcontact.ehl.line_thermal`) puts in a the Poiseuille coefficient of the film's viscosity profile, in k
 the Eyring coefficient of the Reynolds–Eyring flow factor cosh(tau_m/tau0) = sqrt(1 + Lambda^2), Lambda =
-k eta-bar, and in c the profile's Couette factor. The Eyring factor's dependence on the pressure is kept in the
+k eta-bar, and in c the profile's Couette factor (a and c times the film's density factor exp(-alpha_T dT) where
+the lubricant expands as it heats). The Eyring factor's dependence on the pressure is kept in the
 kernels (with Lambda >> 1 the Poiseuille flow of a sheared Eyring film no longer depends on the viscosity; a
 flow factor frozen at the viscosity of the previous pressure made the Hertz zone of a heavily loaded contact
 behave like a contact of 1000 times its load parameter M, and the multigrid diverged: measured, M = 28,

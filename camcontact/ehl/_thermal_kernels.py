@@ -66,13 +66,16 @@ without it the sweeps did not conserve energy (measured on a rigid inlet wedge: 
 layers the peak is now 0.25 % off, then 27 %: tests/unit/test_line_thermal_energy_reference.py). It is collocated
 where conduction holds it and blends into upwinding between neighbouring film points where its cell Peclet number
 exceeds :data:`CELL_PECLET` (a thick inlet). The compression work alpha_T T u dp/dx (alpha_T the lubricant's thermal
-expansivity, T = T0 + the point's rise, dp/dx the pressure solution's gradient, not the one the held Poiseuille flux
-implies at the trial temperature: that one grows as a film cools, and the outlet's expansion cooling ran away to -366
-K with it, measured) is implicit in the point's rise. Conduction along x is neglected (thin film). The viscosity at
-film point j is eta_iso exp(-beta (t + d_j)): t the film's mean temperature rise, d_j the point's rise above the mean
-in the node's present temperatures (lagged from sweep to sweep, beta |d_j| bounded by :data:`PROFILE_BOUND`; d_j = 0
-without ``cross``: the viscosity uniform at the mean). The system of a node is linear for a given t, and t is found as
-the root of t = mean(T(t)) by the Illinois method.
+expansivity, T = T0 + the point's rise, p the pressure solution's, not the gradient the held Poiseuille flux implies
+at the trial temperature: that one grows as a film cools, and the outlet's expansion cooling ran away to -366 K with
+it, measured) is integrated over each cell along the flow, the fluid arriving from its upstream neighbour at (T0 + T)
+exp(alpha_T dp/(rho c)): exact for adiabatic compression, and stable where a cell's pressure rise exceeds rho
+c/alpha_T (2.7 GPa for a mineral oil), where the implicit source made the node's system singular (measured: a cam
+turn's spike of 2.5 GPa per node, film temperatures of -39000 K). Conduction along x is neglected (thin film). The
+viscosity at film point j is eta_iso exp(-beta (t + d_j)): t the film's mean temperature rise, d_j the point's rise
+above the mean in the node's present temperatures (lagged from sweep to sweep, beta |d_j| bounded by
+:data:`PROFILE_BOUND`; d_j = 0 without ``cross``: the viscosity uniform at the mean). The system of a node is linear
+for a given t, and t is found as the root of t = mean(T(t)) by the Illinois method.
 """
 
 from __future__ import annotations
@@ -230,11 +233,11 @@ def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
     eta_iso[i] exp(-beta (t + d_j)) (t the film's mean temperature rise assumed; d_j the node's present
     profile about its mean with ``cross`` set, else 0; see :func:`layer_sweep`). ``film`` = (h, eta_iso, flux,
     limit, G) per node (G the layers' fluxes of :func:`layer_fluxes`), ``params`` = (u1, du, tau0, beta, k, rho c, c1,
-    c2, cross, compression, T0) with c_j = C_j w_0 (compression = alpha_T dp/dx per node [Pa/(m K)], alpha_T the
-    lubricant's expansivity, dp/dx the pressure solution's gradient; T0 [K] the inlet temperature), ``collocation`` =
+    c2, cross, alpha_T, p, T0) with c_j = C_j w_0 (alpha_T [1/K] the lubricant's expansivity, p [Pa] the pressure
+    per node, T0 [K] the inlet temperature), ``collocation`` =
     (zeta, D, D2, weights, integral, inv, F0, F1); A and b are work arrays."""
     h, eta_iso, flux, limit, G = film
-    u1, du, tau0, beta, conductivity, heat_capacity, c1, c2, cross, compression, T0 = params
+    u1, du, tau0, beta, conductivity, heat_capacity, c1, c2, cross, expansivity, pressure, T0 = params
     zeta, D, D2, weights, integral, inv, F0, F1 = collocation
     N = zeta.shape[0] - 1
     n = h.shape[0]
@@ -259,10 +262,8 @@ def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
         u = u1 + du * F0[j] / total + (flux[i] / hi) * (F1[j] - z_star * F0[j]) / C_P
         delta = gradient * hi * (zeta[j] - z_star)
         carry = heat_capacity * abs(u) / dx
-        if u >= 0.0:
-            neighbour = T[i - 1, j]
-        else:
-            neighbour = T[i + 1, j] if i + 1 < n else T[i, j]
+        upstream = i - 1 if u >= 0.0 else (i + 1 if i + 1 < n else i)
+        neighbour = T[upstream, j]
         # the flow across the film's layers, omega = h dzeta/dt = -dG/dx + zeta dq/dx (G the flux below the layer, q the
         # film's; zero at both surfaces; dq/dx = -dh/dt in a squeezed film, 0 in a steady full one): collocated
         # where the conduction holds it (cell Peclet number below CELL_PECLET), else upwinded between neighbouring
@@ -281,11 +282,13 @@ def layer_node(i, t, dx, film, params, A1, A2, collocation, T, A, b):
         else:
             A[j, j] -= upwind * across / gap
             A[j, j + 1] += upwind * across / gap
-        # compression work alpha_T T u dp/dx (T = T0 + the point's rise; heats where the flow runs up the pressure,
-        # cools where it runs down it): linear in the point's rise, its T0 part a source
-        work = compression[i] * u
-        A[j, j] += carry - work
-        b[j] = point_heat(tau_c, delta, inv[j], du, hi, total, Phi, eta_iso[i]) + carry * neighbour + work * T0
+        # compression work alpha_T T u dp/dx, integrated over the cell along the flow: the fluid arrives from its
+        # upstream neighbour at (T0 + T) exp(alpha_T dp/(rho c)), dp the pressure change on the way (heats where the
+        # flow runs up the pressure, cools where it runs down it; stable for any dp)
+        adiabatic = math.exp(expansivity * (pressure[i] - pressure[upstream]) / heat_capacity)
+        A[j, j] += carry
+        b[j] = (point_heat(tau_c, delta, inv[j], du, hi, total, Phi, eta_iso[i])
+                + carry * (adiabatic * (neighbour + T0) - T0))
     x, ok = solve_dense(A, b)
     mean = 0.0
     for j in range(N + 1):
@@ -355,16 +358,18 @@ def node_temperatures(i, dx, film, params, A1, A2, collocation, T, A, b, toleran
 
 @register_jitable
 def layer_sweep(direction, dx, h, eta_iso, flux, limit, u1, du, tau0, beta, conductivity, heat_capacity, C1, C2, zeta,
-                D, D2, weights, integral, T, q1, q2, tolerance, max_iterations, cross, compression, T0):
+                D, D2, weights, integral, T, q1, q2, tolerance, max_iterations, cross, expansivity, pressure, T0):
     """One sweep of the cross-film energy equation over the nodes 1..n-1 (``direction`` +1: downstream, -1:
     upstream), in place on the temperature rises T[i, j] [K] at the film points zeta_j (0 and 1 the
     surfaces) and the surface heat fluxes q1, q2 [W/m^2]. Returns (largest change of T [K], nodes whose film
     temperature found no root below :data:`MAX_RISE` or did not converge).
 
     At node i the film points solve (rho c) (|u_j| (T_ij - T_(i -+ 1)j)/dx + (omega_j/h) dT/dzeta) = (k/h^2)
-    d^2T/dzeta^2 + Q_j + c_i u_j (T0 + T_ij) (the compression work; c_i = ``compression[i]`` = alpha_T dp/dx
-    [Pa/(m K)] per node, 0 without thermal expansion; T0 [K] the inlet temperature) (upwind in x by the sign of u_j: the inlet's reverse flow takes the downstream neighbour;
-    omega_j the flow across the layers from :func:`layer_fluxes` at the start of the sweep, central in x), the surfaces
+    d^2T/dzeta^2 + Q_j + alpha_T (T0 + T) u_j dp/dx (the compression work of a lubricant of expansivity
+    ``expansivity`` [1/K], 0 without; ``pressure`` [Pa] per node, T0 [K] the inlet temperature; integrated over the
+    cell along the flow: the upstream temperature T0 + T_(i -+ 1)j enters times exp(alpha_T dp/(rho c))) (upwind
+    in x by the sign of u_j: the inlet's reverse flow takes the downstream neighbour; omega_j the flow across the
+    layers from :func:`layer_fluxes` at the start of the sweep, central in x), the surfaces
     T_i0 = A_1 + C_1 w_0 q_1, q_1 = (k/h) dT/dzeta(0) and T_iN = A_2 + C_2 w_0 q_2, q_2 = -(k/h) dT/dzeta(1)
     (Jaeger, A_j the upstream history), all together as one dense (N+1) system with the collocation
     derivative matrices D, D2 (d/dzeta) and the antiderivative matrix ``integral``. Velocity u_j and dissipation
@@ -383,7 +388,7 @@ def layer_sweep(direction, dx, h, eta_iso, flux, limit, u1, du, tau0, beta, cond
     collocation = (zeta, D, D2, weights, integral, np.empty(N + 1), np.empty(N + 1), np.empty(N + 1))
     layer_fluxes(h, flux, u1, du, zeta, G)
     film = (h, eta_iso, flux, limit, G)
-    params = (u1, du, tau0, beta, conductivity, heat_capacity, C1 * w[0], C2 * w[0], cross, compression, T0)
+    params = (u1, du, tau0, beta, conductivity, heat_capacity, C1 * w[0], C2 * w[0], cross, expansivity, pressure, T0)
     A = np.empty((N + 1, N + 1))
     b = np.empty(N + 1)
     largest = 0.0

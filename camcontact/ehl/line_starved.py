@@ -151,7 +151,8 @@ def find_meniscus(flux_error, X_a: float, flooded_error: float, *, target: float
     keyed by the X_m it was called with; the returned X_m is one of those); ``flooded_error`` is that of the whole
     domain from ``X_a`` (> 0: the supply is below the flooded flux). The distance d = -1 - X_m to the Hertz inlet
     edge shrinks until the flux falls below the supply: to the root of the secant on ln d through the last two
-    trials, stretched by :data:`BRACKET_OVERSHOOT` (F is concave in ln d, so the secant falls short of the root),
+    trials, stretched by :data:`BRACKET_OVERSHOOT` (near the root F is convex in ln d, so the secant falls short
+    of it; farther out, where F is concave and the secant overshoots, LARGEST_STEP bounds the step),
     each step between :data:`MENISCUS_STEP` and :data:`LARGEST_STEP` of d (the first: MENISCUS_STEP); then regula
     falsi (Illinois) on ln d, where F varies smoothly, until |F/supply - 1| <= ``target`` or
     :data:`MAX_MENISCUS_SOLVES`. (Fixed steps of 0.3 took 7, 10 and 15 thermal solves for layers of 0.8, 0.5 and 0.2

@@ -61,14 +61,16 @@ Models (equations in :mod:`camcontact.ehl._thermal_kernels`):
   neither): the density rho_DH(p) exp(-alpha_T (T - T0)), the Dowson–Higginson law with the constant expansivity of
   the thermal EHL analyses (6.5e-4 1/K since Sadeghi & Dow 1987; their linear factor 1 - alpha_T (T - T0), within
   0.2 % of the exponential to 100 K, whose exponential form keeps alpha_T constant). The energy equation gains the
-  compression work alpha_T T u dp/dx at each film point (T absolute, dp/dx the pressure solution's): the layers that
+  compression work alpha_T T u dp/dx at each film point (T absolute, p the pressure solution's; integrated over
+  each cell of the energy equation's grid along the flow): the layers that
   run into the inlet's pressure heat, its reverse flow and the outlet's expanding film cool; the Reynolds equation
   takes the density at the film's mean temperature on its Poiseuille and Couette coefficients (a density wedge where
   the film heats). Measured (steel rollers, 200 kN/m, T0 = 353 K, level 6): pure rolling at u_m 5/10/20 m/s, h_c/h_c,iso
-  0.947/0.864/0.727 against 0.959/0.892/0.771 without, the outlet's film mean 25-41 K below T0; sliding (S = 1,
+  0.947/0.864/0.723 against 0.959/0.892/0.771 without, the outlet's film mean 26-42 K below T0; sliding (S = 1,
   Eyring 5 MPa) 0.947 against 0.888, h_min 0.780 against 0.757, traction 0.0281 against 0.0291. A constant alpha_T
   overstates the expansion of a hot film at GPa pressures (real oils expand less there), which is why it is not on
-  by default; in the transient march the squeeze term keeps the film's content at the density of T0.
+  by default. The transient march (:func:`thermal_transient_cycle`) refuses it: with the lagged coupling a cam's
+  outlet spike and its compression heating fed each other until no step converged (measured, LS-1 turn).
 * **Simplifications (camcontact's, stated)**: the heat capacity does not depend on temperature or pressure, nor the
   density without ``thermal_expansivity``; no conduction along x; downstream of the film rupture
   the film is treated as full (it no longer affects the pressure); the inlet lubricant and both surfaces enter at T0.
@@ -194,8 +196,8 @@ class ThermalLineContact:
         cools where it runs down it (alpha_T T u dp/dx), and the hot film's lower density enters the Reynolds
         equation. Mineral oils: 6-7e-4 1/K (6.5e-4 in the thermal EHL analyses since Sadeghi & Dow 1987).
     temperature : float, optional
-        The inlet (absolute) temperature T0 [K] of the lubricant and the surfaces, which the compression work
-        alpha_T T u dp/dx needs (required with ``thermal_expansivity`` > 0).
+        The inlet (absolute) temperature T0 [K], 150-800 K, of the lubricant and the surfaces, which the compression
+        work alpha_T T u dp/dx needs (required with ``thermal_expansivity`` > 0).
     """
 
     R: float = number_field(validators=[positive("m")])
@@ -224,6 +226,9 @@ class ThermalLineContact:
     temperature: float | None = number_field(optional=True, validators=[positive("K")])
 
     def __attrs_post_init__(self) -> None:
+        if self.temperature is not None and not 150.0 <= self.temperature <= 800.0:
+            raise InputError(f"ThermalLineContact.temperature = {self.temperature!r} K; allowed: an absolute inlet "
+                             "temperature of 150-800 K (a value in degrees Celsius would cut the compression work)")
         if self.thermal_expansivity > 0.0 and self.temperature is None:
             raise InputError(f"ThermalLineContact.thermal_expansivity = {self.thermal_expansivity!r} 1/K needs the "
                              "inlet temperature (temperature [K]) for the compression work alpha_T T u dp/dx; give it, "
@@ -479,33 +484,41 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
     limit = (np.full(n, np.inf) if contact.limiting_shear_slope is None
              else contact.limiting_shear_stress + contact.limiting_shear_slope * P * p_h)
     used = solution.poiseuille_factor  # the flow factor the solution was solved with, at its pressure
-    flux = -used * h**3 * dp / (12.0 * eta_iso)  # Poiseuille flux in +x the solver carries
+    zeta, D, D2, weights, integral = _film_points(LAYER_POINTS)
+    expansivity = contact.thermal_expansivity if thermal else 0.0
+    stride = 1  # the energy equation's nodes: every stride-th node of the EHL grid
+    while (n - 1) // stride > LAYER_NODES and (n - 1) % (2 * stride) == 0:
+        stride *= 2
+    coarse = slice(None, None, stride)
+    Xe = X[coarse]
+    # with thermal expansion the solution's factors carry the density exp(-alpha_T Tm) of the temperatures they came
+    # from (those the sweeps start from): its volume flux is the mass flux over that density
+    density = np.ones(n)
+    if expansivity > 0.0 and state.get("T") is not None and state["T"].shape[0] == Xe.size:
+        density = np.exp(-expansivity * np.interp(X, Xe, state["T"] @ weights))
+    flux = -used / density * h**3 * dp / (12.0 * eta_iso)  # Poiseuille (volume) flux in +x the solver carries
     pressurised = np.flatnonzero(P > 0.0)
     last = int(pressurised[-1]) + 1 if pressurised.size else n - 1
     wet = np.arange(n) <= min(last, n - 1)
     du = contact.u2 - contact.u1
-    zeta, D, D2, weights, integral = _film_points(LAYER_POINTS)
-    expansivity = contact.thermal_expansivity if thermal else 0.0
     profile = np.zeros((n, LAYER_POINTS))
     failed = 0
     unsettled = False
     if thermal:
-        stride = 1
-        while (n - 1) // stride > LAYER_NODES and (n - 1) % (2 * stride) == 0:
-            stride *= 2
-        coarse = slice(None, None, stride)
-        Xe = X[coarse]
         if state.get("T") is None or state["T"].shape[0] != Xe.size:
             state.update(T=np.zeros((Xe.size, LAYER_POINTS)), q1=np.zeros(Xe.size), q2=np.zeros(Xe.size))
         T, q1, q2 = state["T"], state["q1"], state["q2"]
         dx = float(Xe[1] - Xe[0]) * b
         C1 = 1.0 / (contact.effusivity_1 * math.sqrt(math.pi * contact.u1))
         C2 = 1.0 / (contact.effusivity_2 * math.sqrt(math.pi * contact.u2))
+        # the compression work takes the pressure change between the energy grid's nodes (the EHL grid's gradient
+        # sampled at every stride-th node missed or caught the outlet spike by chance: the outlet film's
+        # temperature swung from -3 to -63 K with the grid level, measured)
         args = (dx, np.ascontiguousarray(h[coarse]), np.ascontiguousarray(eta_iso[coarse]),
                 np.ascontiguousarray(flux[coarse]), np.ascontiguousarray(limit[coarse]), contact.u1, du, tau0,
                 contact.beta, contact.conductivity,
                 contact.heat_capacity, C1, C2, zeta, D, D2, weights, integral, T, q1, q2, NODE_TOLERANCE,
-                NODE_ITERATIONS, bool(cross_film), np.ascontiguousarray(expansivity * dp[coarse]),
+                NODE_ITERATIONS, bool(cross_film), expansivity, np.ascontiguousarray(P[coarse] * p_h),
                 contact.temperature or 0.0)
         for _ in range(LAYER_SWEEPS):
             down, bad_down = kernels["layer_sweep"](1, *args)
@@ -927,11 +940,20 @@ def thermal_transient_cycle(times, w, R, u1, u2, *, contact: ThermalLineContact,
     thermal, non_newtonian, cross_film : bool
         As :func:`solve_thermal`: with ``cross_film`` the march takes the Poiseuille and Couette factors of the film's
         viscosity profile (the squeeze term keeps the film's content, the wedge the Couette factor's).
+
+    The compression work (``contact.thermal_expansivity`` > 0) is refused (InputError): with the lagged coupling it
+    fed a cam's outlet pressure spike, which grew from step to step (measured: LS-1 roller turn, level 8, 1.6, 1.7,
+    2.2, 4.3 GPa over four steps, the film there 80, 107, 180, 728 K above T0, its flow factor 2.5e9, then no
+    solution), where the steady iteration converges.
     """
     from .line_transient import transient_cycle
 
     if not isinstance(contact, ThermalLineContact):
         raise InputError(f"thermal_transient_cycle: contact = {contact!r}; allowed: a ThermalLineContact")
+    if thermal and contact.thermal_expansivity > 0.0:
+        raise InputError(f"thermal_transient_cycle: contact.thermal_expansivity = {contact.thermal_expansivity!r} 1/K; "
+                         "allowed: 0 (the transient march does not take the compression work: with its lagged "
+                         "coupling a cam's outlet pressure spike ran away; the steady solve_thermal takes it)")
     if non_newtonian is None:
         non_newtonian = contact.eyring_stress is not None
     if non_newtonian and contact.eyring_stress is None:

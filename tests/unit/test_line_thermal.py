@@ -111,8 +111,8 @@ def test_the_isothermal_limit_ignores_the_expansivity():
 def test_an_expanding_film_carries_its_density_on_the_couette_factor_and_the_work_in_its_temperatures():
     """Compression work and thermal expansion (alpha_T 6.5e-4 1/K, T0 353 K). Pure rolling at 20 m/s: the Couette
     factor of the solution is the density exp(-alpha_T Tm) of its film's mean temperature (to the iteration's
-    tolerance); the inlet's film heats more than without the work (measured peak 46.9 K against 21.1 K) and the
-    outlet's expanding film cools below T0 (-41 K). Sliding (S = 1, Eyring 5 MPa, 5 m/s): the hot Hertz zone expands
+    tolerance); the inlet's film heats more than without the work (measured peak 46.6 K against 21.1 K) and the
+    outlet's expanding film cools below T0 (-42 K). Sliding (S = 1, Eyring 5 MPa, 5 m/s): the hot Hertz zone expands
     and, to carry the inlet's mass, thickens (a density wedge): h_c/h_c,iso 0.947 against 0.888 without, h_min 0.780
     against 0.757, the traction 0.0281 against 0.0291 (measured)."""
     rolling = solve_thermal(_contact(u_m=20.0, thermal_expansivity=6.5e-4, temperature=353.0), LEVEL)
@@ -130,6 +130,18 @@ def test_an_expanding_film_carries_its_density_on_the_couette_factor_and_the_wor
         0.888, abs=3e-3)
     assert sliding.minimum_film_reduction > before.minimum_film_reduction
     assert sliding.traction_coefficient == pytest.approx(0.0281, abs=5e-4)
+
+
+def test_the_compression_work_does_not_depend_on_where_the_energy_grid_meets_the_outlet_spike():
+    """A heavily loaded rolling contact (2 MN/m, 5 m/s) with compression work: the outlet's expansion cooling and
+    the minimum film keep their values from grid level 8 to 9 (measured -33.8 and -32.7 K, h_min/h_min,iso 0.9652
+    and 0.9650). With the EHL grid's pressure gradient sampled at the energy grid's nodes, which catch or miss the
+    outlet spike by chance, they swung: -24.6 and -10.8 K, 0.9586 and 0.9534 (and -62.7 K at level 10)."""
+    contact = _contact(w=2e6, thermal_expansivity=6.5e-4, temperature=353.0)
+    coarse, fine = (solve_thermal(contact, level) for level in (8, 9))
+    assert coarse.temperature_rise[coarse.wet].min() == pytest.approx(fine.temperature_rise[fine.wet].min(), abs=3.0)
+    assert coarse.minimum_film_reduction == pytest.approx(fine.minimum_film_reduction, abs=1e-3)
+    assert fine.temperature_rise[fine.wet].min() < -25.0
 
 
 def test_a_temperature_independent_oil_heats_but_keeps_its_film():
@@ -189,7 +201,7 @@ def _sweep_inputs(n=60, flux=0.0, effusivity=1e12, heat_capacity=1.0, cross=True
                 conductivity=0.1, heat_capacity=heat_capacity, C1=1.0 / (effusivity * math.sqrt(math.pi)),
                 C2=1.0 / (effusivity * math.sqrt(3.0 * math.pi)), zeta=zeta, D=D, D2=D2, weights=weights,
                 integral=integral, T=np.zeros((n, 9)), q1=np.zeros(n), q2=np.zeros(n), tolerance=1e-12,
-                max_iterations=60, cross=cross, compression=np.zeros(n), T0=0.0)
+                max_iterations=60, cross=cross, expansivity=0.0, pressure=np.zeros(n), T0=0.0)
 
 
 def test_couette_film_between_cold_walls_has_the_parabolic_profile():
@@ -249,9 +261,11 @@ def test_the_energy_sweeps_conserve_energy_in_a_converging_film_with_reverse_flo
     the heat they carry. Reversing the sign of omega breaks it too (23.5 against -21.5, measured). With the
     compression work of an oil of expansivity 6.5e-4 1/K at T0 = 353 K, alpha_T T u dp/dx at every film point, the
     balance gains W = int alpha_T p' (T0 q + h int u T dzeta) dx: measured W = 4.18 W/m, most of it conducted into the
-    walls near which it is done (balance 9.88 W/m), convected 9.66 W/m. The discretisation error is the same 0.16-0.27
-    W/m with and without the work (it changes sign as the grid is refined from 400 to 1600 nodes: 17.66/17.82,
-    18.18/18.06, 18.45/18.18 without; 9.66/9.88, 10.19/10.11, 10.46/10.22 with), so the test bounds it in W/m."""
+    walls near which it is done (balance 9.35 W/m), convected 9.68 W/m. Without the work the sweeps miss the balance by
+    0.16-0.27 W/m, changing sign as the grid is refined from 400 to 1600 nodes (17.66/17.82, 18.18/18.06,
+    18.45/18.18); the work, integrated over each cell along the flow at the upstream temperature, adds a first-order
+    error that halves with the spacing (9.68/9.35, 10.20/9.84, 10.46/10.09: 0.49, 0.24, 0.10 W/m beyond the
+    first), so the test bounds the miss in W/m."""
     zeta, D, D2, weights, integral = _film_points(9)
     n = 400
     x = np.linspace(-4e-4, 0.0, n)
@@ -260,8 +274,10 @@ def test_the_energy_sweeps_conserve_energy_in_a_converging_film_with_reverse_flo
     flux = 1.3 * u * 1e-6 - u * h  # the Poiseuille flux of a constant total flux
     args = _sweep_inputs(n=n)
     gradient = -12.0 * eta * flux / h**3
+    pressure = np.concatenate([[0.0], np.cumsum(0.5 * (gradient[1:] + gradient[:-1]) * np.diff(x))])
     args.update(dx=float(x[1] - x[0]), h=h, eta_iso=np.full(n, eta), flux=flux, u1=u, du=0.0, conductivity=0.14,
-                heat_capacity=rho_c, C1=1e-12, C2=1e-12, tolerance=1e-10, compression=expansivity * gradient, T0=353.0)
+                heat_capacity=rho_c, C1=1e-12, C2=1e-12, tolerance=1e-10, expansivity=expansivity, pressure=pressure,
+                T0=353.0)
     sweep = _thermal_kernels.compiled("layer_sweep")
     for _ in range(30):
         sweep(1, *args.values())
@@ -272,7 +288,7 @@ def test_the_energy_sweeps_conserve_energy_in_a_converging_film_with_reverse_flo
     work = expansivity * gradient * (353.0 * 1.3 * u * 1e-6 + h * np.sum(weights * velocity * T, axis=1))
     heat = 12.0 * eta * flux**2 / h**3 - q1 - q2 + work
     balance = np.trapezoid(heat[1:], x[1:])
-    assert convected[-1] - convected[1] == pytest.approx(balance, abs=0.3)  # W/m; measured 0.16 and 0.22 off
+    assert convected[-1] - convected[1] == pytest.approx(balance, abs=0.5)  # W/m; measured 0.16 and 0.33 off
     assert np.any(velocity < 0.0)  # reverse flow
     assert 2.5 < T.max() < 3.5  # measured peak 3.03 K and 3.07 K
 
@@ -325,7 +341,7 @@ def test_layer_sweep_twins_agree_with_reverse_flow_and_heated_walls():
     for kernel in (_thermal_kernels.PY["layer_sweep"], _thermal_kernels.compiled("layer_sweep")):
         args = _sweep_inputs(n=30, flux=-3e-6, effusivity=1e4, heat_capacity=1.7e6)
         args.update(beta=0.03, eta_iso=np.linspace(0.05, 5.0, 30), h=np.linspace(3e-6, 1e-6, 30), tolerance=1e-10,
-                    compression=6.5e-4 * np.linspace(5e10, -5e10, 30), T0=353.0)  # compression, then expansion
+                    expansivity=6.5e-4, pressure=1e9 * np.sin(np.linspace(0.0, np.pi, 30)), T0=353.0)  # up, then down
         for direction in (1, -1, 1, -1):
             kernel(direction, *args.values())
         results.append(args["T"].copy())
@@ -384,6 +400,8 @@ def test_bad_inputs_name_the_field():
         _contact(thermal_expansivity=6.5e-4)
     with pytest.raises(InputError, match="thermal_expansivity"):
         _contact(thermal_expansivity=-1e-4, temperature=353.0)
+    with pytest.raises(InputError, match=r"temperature = 80.0 K; allowed: an absolute inlet temperature of 150-800 K"):
+        _contact(thermal_expansivity=6.5e-4, temperature=80.0)
 
 
 def test_plot_draws_fields(tmp_path):
@@ -423,20 +441,19 @@ def test_thermal_transient_at_constant_conditions_settles_on_the_steady_thermal_
     assert "max film temperature rise [K]" in frame and len(frame) == times.size
 
 
-def test_an_expanding_film_s_transient_settles_on_its_steady_solution():
-    """With compression work and thermal expansion the march takes the density on its flow and Couette factors
-    (the squeeze term keeps the content at T0's density, which a steady film does not feel): held at S = 0.5 it
-    settles on the steady thermal solution, films and traction to 1e-4 (measured 6e-6, 7e-6, 6e-7)."""
+def test_the_thermal_march_refuses_the_compression_work():
+    """thermal_transient_cycle with thermal_expansivity > 0: InputError naming the field (its lagged coupling ran
+    away at the LS-1 cam's outlet spike, 4.3 GPa and 728 K after four steps, measured); isothermal (thermal=False)
+    the expansivity plays no part and the march runs."""
     from camcontact.ehl.line_thermal import thermal_transient_cycle
 
     contact = _contact(S=0.5, eyring_stress=5e6, thermal_expansivity=6.5e-4, temperature=353.0)
-    steady = solve_thermal(contact, LEVEL)
-    march = thermal_transient_cycle(np.arange(40) * 2e-5, contact.w, contact.R, contact.u1, contact.u2,
-                                    contact=contact, levels=LEVEL)
+    times = np.arange(3) * 2e-5
+    with pytest.raises(InputError, match="thermal_transient_cycle: contact.thermal_expansivity = 0.00065 1/K"):
+        thermal_transient_cycle(times, contact.w, contact.R, contact.u1, contact.u2, contact=contact, levels=LEVEL)
+    march = thermal_transient_cycle(times, contact.w, contact.R, contact.u1, contact.u2, contact=contact,
+                                    levels=LEVEL, thermal=False)
     assert march.films.converged.all()
-    assert march.films.h_c[-1] == pytest.approx(steady.h_c, rel=1e-4)
-    assert march.films.h_min[-1] == pytest.approx(steady.h_min, rel=1e-4)
-    assert march.traction_coefficient[-1] == pytest.approx(steady.traction_coefficient, rel=1e-4)
 
 
 def test_a_thermal_transient_reports_where_the_viscosity_profile_reached_its_bound():
