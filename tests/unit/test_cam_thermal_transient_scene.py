@@ -177,3 +177,17 @@ def test_a_starved_thermal_march_carries_its_layer_and_stays_below_the_flooded_o
     # rho_c h_c = 0.2 um with rho_c 1.16-1.21 over the roller's Hertz pressures
     assert np.all((h_s > 0.16e-6) & (h_s < 0.175e-6))
     np.testing.assert_allclose(h_s, np.asarray(cold["h_c"], dtype=float), rtol=1e-3)
+
+
+def test_the_thermal_march_refuses_a_lubricant_s_compression_work(scene):
+    """A lubricant with thermal_expansivity in the thermal cam march: the film step fails loudly, naming the field;
+    strict raises the InputError. Without the scene's oil temperature the compression work cannot be had at all;
+    with it the transient march refuses it (camcontact.ehl.line_thermal.thermal_transient_cycle)."""
+    oil = attrs.evolve(scene.lubricant, thermal_expansivity="6.5e-4 1/K")
+    hot = attrs.evolve(scene, lubricant=oil)
+    assert hot.temperature is None
+    with pytest.raises(cc.InputError, match="thermal_expansivity = 0.00065 1/K needs its temperature"):
+        cc.Analysis(hot, outputs=["h_min"], models={"film": FILM}, effects=BASE | {"thermal"}, strict=True).run()
+    with pytest.raises(cc.InputError, match="transient march does not take the compression work"):
+        cc.Analysis(attrs.evolve(hot, temperature="80 degC"), outputs=["h_min"], models={"film": FILM},
+                    effects=BASE | {"thermal"}, strict=True).run()
