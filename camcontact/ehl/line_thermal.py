@@ -285,7 +285,8 @@ class ThermalLineSolution:
     surface_temperature_rise_2: np.ndarray = attrs.field(repr=False, eq=False)  #: [K]
     shear_stress: np.ndarray = attrs.field(repr=False, eq=False)  #: mid-plane tau_m, sign of u2 - u1 [Pa]
     heat: np.ndarray = attrs.field(repr=False, eq=False)  #: dissipation per unit area [W/m^2]
-    flow_factor: np.ndarray = attrs.field(repr=False, eq=False)  #: phi of the last march [-]
+    #: phi of the last march [-] (with thermal expansion times the film's density factor exp(-alpha_T dT))
+    flow_factor: np.ndarray = attrs.field(repr=False, eq=False)
     #: nodes whose viscosity profile across the film reached the bound beta |T - T_mean| = PROFILE_BOUND of
     #: :mod:`camcontact.ehl._thermal_kernels` (a film sheared into bands the nine film points do not resolve) [bool]
     profile_bounded: np.ndarray = attrs.field(repr=False, eq=False)
