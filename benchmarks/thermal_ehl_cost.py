@@ -98,27 +98,21 @@ def rows_of(S: float, level: int, repeats: int) -> list[dict]:
                         **{f"h_c / iso {short} [-]": value for short, value in factors.items()},
                         "traction [-]": mu_formula, "time [s]": t_iso + t_formula,
                         "time / isothermal [-]": (t_iso + t_formula) / t_iso})
+    def thermal_row(rung: str, solution, seconds: float, **extra) -> dict:
+        """The row of a thermal solve (its films, traction, film temperature, convergence and time)."""
+        return base | {"rung": rung, **extra, "h_c [nm]": 1e9 * solution.h_c, "h_min [nm]": 1e9 * solution.h_min,
+                       "h_c / iso [-]": solution.film_reduction, "traction [-]": solution.traction_coefficient,
+                       "max film rise [K]": solution.max_temperature_rise, "converged": solution.record.converged,
+                       "time [s]": seconds, "time / isothermal [-]": seconds / t_iso}
+
     thermal, t_thermal = timed(lambda: solve_thermal(c, level), repeats)
-    rows.append(base | {"rung": "thermal", "h_c [nm]": 1e9 * thermal.h_c, "h_min [nm]": 1e9 * thermal.h_min,
-                        "h_c / iso [-]": thermal.film_reduction, "traction [-]": thermal.traction_coefficient,
-                        "max film rise [K]": thermal.max_temperature_rise, "iterations": thermal.record.cycles,
-                        "converged": thermal.record.converged, "time [s]": t_thermal,
-                        "time / isothermal [-]": t_thermal / t_iso})
+    rows.append(thermal_row("thermal", thermal, t_thermal, iterations=thermal.record.cycles))
     layer = STARVED_LAYER * thermal.h_c
     starved, t_starved = timed(lambda: solve_thermal(attrs.evolve(c, oil_layer=layer), level), repeats)
-    rows.append(base | {"rung": "thermal starved", "layer [nm]": 1e9 * layer, "h_c [nm]": 1e9 * starved.h_c,
-                        "h_min [nm]": 1e9 * starved.h_min, "h_c / iso [-]": starved.film_reduction,
-                        "traction [-]": starved.traction_coefficient,
-                        "max film rise [K]": starved.max_temperature_rise, "converged": starved.record.converged,
-                        "time [s]": t_starved, "time / isothermal [-]": t_starved / t_iso})
+    rows.append(thermal_row("thermal starved", starved, t_starved, **{"layer [nm]": 1e9 * layer}))
     expanding_contact = attrs.evolve(c, thermal_expansivity=EXPANSIVITY, temperature=INLET_TEMPERATURE)
     expanding, t_expanding = timed(lambda: solve_thermal(expanding_contact, level), repeats)
-    rows.append(base | {"rung": "thermal expanding", "h_c [nm]": 1e9 * expanding.h_c,
-                        "h_min [nm]": 1e9 * expanding.h_min, "h_c / iso [-]": expanding.film_reduction,
-                        "traction [-]": expanding.traction_coefficient,
-                        "max film rise [K]": expanding.max_temperature_rise, "iterations": expanding.record.cycles,
-                        "converged": expanding.record.converged, "time [s]": t_expanding,
-                        "time / isothermal [-]": t_expanding / t_iso})
+    rows.append(thermal_row("thermal expanding", expanding, t_expanding, iterations=expanding.record.cycles))
     return rows
 
 

@@ -252,10 +252,10 @@ class ThermalLineContact:
     @property
     def supply(self) -> float | None:
         """The starved inlet's content H_oil = h_oil R/b^2 [-] (:attr:`LineEHLProblem.supply`; None: flooded),
-        b^2 = 8 w R/(pi E')."""
+        over the Hertz film scale b^2/R of :meth:`LineEHLProblem.scales`."""
         if self.oil_layer is None:
             return None
-        return self.oil_layer * self.R / (8.0 * self.w * self.R / (math.pi * self.E_reduced))
+        return self.oil_layer / self.problem().scales(self.R, self.w, self.E_reduced)["h_scale"]
 
     def problem(self) -> LineEHLProblem:
         """The dimensionless isothermal problem of the contact (:meth:`LineEHLProblem.from_contact`)."""

@@ -218,8 +218,8 @@ class Multigrid(FilmModel):
         if oil_layer is not None:
             from ..ehl.line_starved import solve_starved
 
-            b_squared = 8.0 * w * R / (math.pi * E_reduced)
-            starved = attrs.evolve(problem, cavitation="mass_conserving", supply=float(oil_layer) * R / b_squared)
+            supply = float(oil_layer) / problem.scales(R, w, E_reduced)["h_scale"]  # H_oil = h_oil R/b^2
+            starved = attrs.evolve(problem, cavitation="mass_conserving", supply=supply)
             solution = solve_starved(starved, self.levels, tolerance=self.tolerance, strict=self.strict)
         else:
             solution = solve_multigrid(problem, self.levels, tolerance=self.tolerance, strict=self.strict,
