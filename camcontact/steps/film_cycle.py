@@ -214,8 +214,12 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
                     contact_open, film_speed_factor, piezoviscosity, cam_angle, angular_speed, **inputs):
     """Films [m] over the turn from one transient march with the squeeze term (the ``squeeze`` effect):
     implicit BDF2 steps from angle to angle through any entrainment reversal, from the steady film at
-    the steadiest angle; needs contact and a constant cam speed at every angle. Optional ``oil_layer`` [m]: a
-    starved inflow (the film model's cavitation ``"mass_conserving"``;
+    the steadiest angle; needs contact and a constant cam speed at every angle. The march's domain is the film
+    model's ``domain`` (units of the reference half-width, :func:`~camcontact.ehl.line_transient.transient_cycle`)
+    or :func:`~camcontact.ehl.line_transient.automatic_transient_domain` (the inlet at -4: a steady film's
+    automatic domain lengthens the inlet of thick films, so at H_c above about 0.08 the march's films are up to
+    0.8 :func:`~camcontact.ehl.line_domain.inlet_tail_fraction` thinner than the steady ones).
+    Optional ``oil_layer`` [m]: a starved inflow (the film model's cavitation ``"mass_conserving"``;
     :class:`~camcontact.ehl.line_transient.TransientLineSolver`), whose march starts from the steady starved film;
     ``x_min`` [m]: where the film is thinnest, from the contact centre, positive in the direction of u_m > 0."""
     from ..ehl.line_transient import transient_cycle
@@ -226,7 +230,8 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
         times, np.asarray(w)[order], np.asarray(R)[order], u[order], E_reduced=E_reduced, eta0=eta0,
         **march_laws(lubricant_state, piezoviscosity, alpha_effective), density=density_law,
         levels=film_model.levels, tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict,
-        cavitation=getattr(film_model, "cavitation", "reynolds"), oil_layer=inputs.get("oil_layer"))
+        cavitation=getattr(film_model, "cavitation", "reynolds"), oil_layer=inputs.get("oil_layer"),
+        domain=getattr(film_model, "domain", None))
     h_c, h_min, x_min, converged = _in_order(order, result.h_c, result.h_min, result.x_min,
                                              np.asarray(result.converged, dtype=bool))
     messages = _in_order(order, np.array([record.message for record in result.records], dtype=object))[0]
@@ -281,7 +286,8 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
         times, np.asarray(w)[order], np.asarray(R)[order], u1[order], u2[order], contact=contact,
         levels=film_model.levels, thermal=film_model.thermal, non_newtonian=film_model.non_newtonian,
         tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict,
-        cavitation=getattr(film_model, "cavitation", "reynolds"), oil_layer=inputs.get("oil_layer"))
+        cavitation=getattr(film_model, "cavitation", "reynolds"), oil_layer=inputs.get("oil_layer"),
+        domain=getattr(film_model, "domain", None))
     films = result.films
     energy = np.asarray(result.thermal, dtype=bool)  # the energy equation ran after the instant's film
     heated = np.concatenate([[False], energy[:-1]])  # the instant's film took the last instant's flow factors

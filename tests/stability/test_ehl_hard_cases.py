@@ -82,8 +82,9 @@ def test_stagnating_attempt_hands_over_to_the_conservative_settings():
 
     assert not stagnated([1e-3 * 0.6**k for k in range(12)], STAGNATION)  # slow but steady: keeps going
     assert stagnated([6e-5, 5.7e-5, 5.9e-5, 6.4e-5, 6.5e-5, 6.3e-5, 6.3e-5, 6.3e-5, 6.4e-5, 6.5e-5], STAGNATION)
-    # the automatic domain as it was before it was rounded up to share grids ([-6.73, 2.52] now: there the
-    # conservative F-cycles stagnate too and the W-cycles converge, a longer ladder than this test pins down)
+    # the automatic domain as it was before it was rounded up to share grids (rounded, [-6.73, 2.52], the
+    # conservative F-cycles stagnate too and the W-cycles converge, a longer ladder than this test pins down; the
+    # automatic domain is [-16, 2.52] since its inlet follows Grubin's inlet tail, camcontact.ehl.line_domain)
     problem = LineEHLProblem(M=2.9147, L=18.507, domain=(-6.138520038277336, 2.301945014354001))
     assert automatic_domain(2.9147, 18.507)[0] < problem.domain[0]
     pointwise = MultigridSettings(spike_drop=0.0)
