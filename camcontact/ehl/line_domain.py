@@ -89,7 +89,7 @@ def automatic_domain(M: float, L: float, elastic: bool = True,
     length that scales with sqrt(2 H) rather than with b), r_in the smallest at least r with Grubin's inlet tail
     :func:`inlet_tail_fraction`(-4 r_in) <= :data:`INLET_TAIL` (module docstring: the cut then costs the central
     film about 0.25 %). Thin films (H below about 0.08) keep [-4, 1.5]. ``inlet_tail`` None: r_in = r, the
-    earlier rule, which the thermal solver's automatic domain keeps (:mod:`camcontact.models.film_multigrid`).
+    earlier rule.
 
     The rounding lets neighbouring contacts (the angles of a cam cycle) share their domain, so a warm
     start from the neighbour's solution starts on the same grid and two neighbours' solutions extrapolate node

@@ -84,8 +84,31 @@ from .deformation import DIRECT_BELOW, Deformation
 from .line_problem import LineEHLProblem, grid_points, kernel_coefficients
 from .line_solution import ConvergenceRecord, LineEHLSolution
 
-__all__ = ["MONITOR_RULES", "RUNAWAY_RESIDUAL", "WARM_RULES", "LineHierarchy", "MultigridSettings",
-           "WarmStart", "extrapolated_start", "inlet_mapped", "solve_multigrid"]
+__all__ = ["COARSEST_SPACING", "MONITOR_RULES", "RUNAWAY_RESIDUAL", "STEADY_COARSEST_SPACING", "WARM_RULES",
+           "LineHierarchy", "MultigridSettings", "WarmStart", "coarsest_level", "extrapolated_start", "inlet_mapped",
+           "solve_multigrid"]
+
+#: the transient march's coarsest grid has at most this spacing (units of b_r; :mod:`camcontact.ehl.line_transient`).
+#: A coarser one (wide domains: reversal, squeeze) slows the H0 correction: measured convergence factor 0.3 per
+#: cycle with a spacing of 1.7 on a rigid squeeze film, 0.01 with 0.43.
+COARSEST_SPACING = 0.45
+
+#: the steady solver's coarsest grid has at most this spacing (units of b; :attr:`MultigridSettings.cycle_coarsest`
+#: None). The default domain [-4, 1.5] (0.39) and the automatic domains up to 14 b wide keep the 15-node grid; on
+#: wider ones (thick films' long inlets) a coarser grid stalls the thermal solver's multigrid solves: at 50 kN/m,
+#: 20 m/s, S = 1.5 on [-32, 5] (level 7) the fixed point failed with a coarsest spacing of 2.6 and 1.3 and converges
+#: in 8-9 iterations with 0.66 (Newtonian and Eyring). (0.45 as in the march cost the LS-1 cam cycle 30 % more.)
+STEADY_COARSEST_SPACING = 1.0
+
+
+def coarsest_level(domain, spacing: float = COARSEST_SPACING) -> int:
+    """The first level whose spacing is at most ``spacing`` (the cycles' coarsest)."""
+    width = float(domain[1] - domain[0])
+    level = 1
+    while width / (14 * 2 ** (level - 1)) > spacing:
+        level += 1
+    return level
+
 
 
 @attrs.frozen
@@ -127,8 +150,10 @@ class MultigridSettings:
     #: FMG starts here with the dense Newton solver: the 15-node coarsest grid's own discrete
     #: solution can be unphysical (negative films), though it serves well as an FAS coarse grid
     start_level: int = 3
-    #: the coarsest level the cycles descend to (1 = the 15-node grid)
-    cycle_coarsest: int = 1
+    #: the coarsest level the cycles descend to (1 = the 15-node grid); None: :func:`coarsest_level` of the
+    #: problem's domain (below the finest level), so that wide domains keep a coarse spacing of at most
+    #: :data:`STEADY_COARSEST_SPACING`
+    cycle_coarsest: int | None = None
     #: apply coarse-grid corrections only where a node and both neighbours are pressurised
     correct_pressurised_only: bool = True
     #: no residual restriction at nodes next to a cavitated node
@@ -234,6 +259,9 @@ class LineHierarchy:
 
     def __init__(self, problem: LineEHLProblem, levels: int, settings: MultigridSettings, compiled: bool):
         self.problem = problem
+        if settings.cycle_coarsest is None:
+            coarsest = coarsest_level(problem.domain, STEADY_COARSEST_SPACING)
+            settings = attrs.evolve(settings, cycle_coarsest=max(1, min(coarsest, levels - 1)))
         self.settings = settings
         self.kernel = _kernels.compiled if compiled else _kernels.PY.__getitem__
         self.cycle_kernel = _fas_kernels.compiled("fas_cycle") if compiled else _fas_kernels.fas_cycle

@@ -79,7 +79,7 @@ from ..errors import ConvergenceError, ConvergenceWarning, InputError
 from .attempts import run_ladder
 from .cycle_monitor import CycleMonitor
 from .line_multigrid import WARM_RULES
-from .line_multigrid import ROBUST, MultigridSettings, LineHierarchy, solve_multigrid
+from .line_multigrid import COARSEST_SPACING, ROBUST, LineHierarchy, MultigridSettings, coarsest_level, solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
 from .line_starved import solve_starved
@@ -234,20 +234,6 @@ class _TransientHierarchy(LineHierarchy):
 
 
 # ----------------------------------------------------------------------------- the marcher
-#: the coarsest grid of the cycles has at most this spacing (units of b_r); the steady default
-#: [-4, 1.5] has 0.39 on its 15-node grid. A coarser one (wide domains: reversal, squeeze) slows
-#: the H0 correction: measured convergence factor 0.3 per cycle with a spacing of 1.7 on a rigid
-#: squeeze film, 0.01 with 0.43.
-COARSEST_SPACING = 0.45
-
-
-def coarsest_level(domain) -> int:
-    """The first level whose spacing is at most :data:`COARSEST_SPACING` (the cycles' coarsest)."""
-    width = float(domain[1] - domain[0])
-    level = 1
-    while width / (14 * 2 ** (level - 1)) > COARSEST_SPACING:
-        level += 1
-    return level
 
 
 #: the stop rules of a step's cycles: a warm-started steady solve's (:data:`camcontact.ehl.line_multigrid.WARM_RULES`)

@@ -18,8 +18,7 @@ from ..errors import InputError
 from .base import FilmModel, builtin
 from .film_line import LINE_INPUTS
 
-__all__ = ["DOMAIN_RATIO", "INLET_TAIL", "Multigrid", "automatic_domain", "inlet_tail_fraction", "solver_laws",
-           "thermal_domain"]
+__all__ = ["DOMAIN_RATIO", "INLET_TAIL", "Multigrid", "automatic_domain", "inlet_tail_fraction", "solver_laws"]
 
 
 def solver_laws(model: str, lubricant_state, density_law) -> tuple[str, str]:
@@ -34,21 +33,6 @@ def solver_laws(model: str, lubricant_state, density_law) -> tuple[str, str]:
         raise InputError(f"film model {model!r} supports the dowson_higginson and incompressible density "
                          f"laws, not {density!r}")
     return viscosity, density
-
-
-def thermal_domain(M: float, L: float, elastic: bool = True) -> tuple[float, float]:
-    """The thermal / non-Newtonian solver's automatic domain [X_a, X_b] (units of b): :func:`automatic_domain`'s
-    earlier rule, X_a = -4 r with r = max(1, sqrt(2 H)) rounded (no inlet lengthening by Grubin's tail).
-
-    The thermal iteration does not converge on the long inlets the isothermal default gives thick films: at
-    50 kN/m and 20 m/s on the rollers of tests/stability/test_thermal_ehl_hard_cases.py (M = 0.83, inlet -32 b)
-    neither the Newtonian film (S = 0 and 1.5) nor the Eyring one (S = 1.5) converges at levels 7-9 with the
-    inlet at -16, -22.6 or -32 b; the Newtonian S = 1.5 one does on [-11.3, 2.5] and [-8, 2.5]. So the thermal
-    solves keep this domain, and their films share its inlet cut (about 0.8 of :func:`inlet_tail_fraction`:
-    2.2 % thin at H_c 0.39, 7 % at H_c 1.0); their ratios to the isothermal film of the same domain
-    (``h_c_isothermal``) are the thermal effect."""
-    return automatic_domain(M, L, elastic, inlet_tail=None)
-
 
 
 @builtin
@@ -219,8 +203,7 @@ class Multigrid(FilmModel):
     def thermal_contact(self, problem, R, w, E_reduced, u1, u2, eta0, alpha, lubricant_state, effusivity,
                         oil_layer=None):
         """The :class:`~camcontact.ehl.line_thermal.ThermalLineContact` of the thermal and/or non-Newtonian solve:
-        ``problem`` (:meth:`problem`) gives the laws, its domain the model's ``domain`` or the thermal solver's
-        automatic one (:func:`thermal_domain`); R [m], w [N/m], E' [Pa], surface speeds u1, u2
+        ``problem`` (:meth:`problem`) gives the laws and domain; R [m], w [N/m], E' [Pa], surface speeds u1, u2
         [m/s], eta0 [Pa s], alpha [1/Pa], a starved inlet's ``oil_layer`` [m] (None: flooded); the lubricant's
         conductivity, density, specific heat and thermoviscous coefficient and the surfaces' ``effusivity`` (a pair
         [W s^0.5/(m^2 K)]) are needed with ``thermal`` (InputError naming the missing ones), the Eyring stress with
@@ -259,8 +242,7 @@ class Multigrid(FilmModel):
             effusivity_1=float(data["effusivity"][0]), effusivity_2=float(data["effusivity"][1]),
             eyring_stress=self.eyring_stress if self.non_newtonian else None,
             limiting_shear_stress=self.limiting_shear_stress, limiting_shear_slope=self.limiting_shear_slope,
-            viscosity=problem.viscosity, density=problem.density, z=problem.z, p0=problem.p0,
-            domain=self.domain if self.domain is not None else thermal_domain(problem.M, problem.L, problem.elastic),
+            viscosity=problem.viscosity, density=problem.density, z=problem.z, p0=problem.p0, domain=problem.domain,
             elastic=problem.elastic, oil_layer=None if oil_layer is None else float(oil_layer),
             thermal_expansivity=expansivity, temperature=None if temperature is None else float(temperature))
 

@@ -111,10 +111,10 @@ def test_the_isothermal_limit_ignores_the_expansivity():
 def test_an_expanding_film_carries_its_density_on_the_couette_factor_and_the_work_in_its_temperatures():
     """Compression work and thermal expansion (alpha_T 6.5e-4 1/K, T0 353 K). Pure rolling at 20 m/s: the Couette
     factor of the solution is the density exp(-alpha_T Tm) of its film's mean temperature (to the iteration's
-    tolerance); the inlet's film heats more than without the work (measured peak 46.6 K against 21.1 K) and the
-    outlet's expanding film cools below T0 (-42 K). Sliding (S = 1, Eyring 5 MPa, 5 m/s): the hot Hertz zone expands
-    and, to carry the inlet's mass, thickens (a density wedge): h_c/h_c,iso 0.947 against 0.888 without, h_min 0.780
-    against 0.757, the traction 0.0281 against 0.0291 (measured)."""
+    tolerance); the inlet's film heats more than without the work (measured peak 47.8 K against 22.4 K) and the
+    outlet's expanding film cools below T0 (-38 K). Sliding (S = 1, Eyring 5 MPa, 5 m/s): the hot Hertz zone expands
+    and, to carry the inlet's mass, thickens (a density wedge): h_c/h_c,iso 0.944 against 0.885 without, h_min 0.778
+    against 0.756, the traction 0.0278 against 0.0288 (measured, on the automatic domains)."""
     rolling = solve_thermal(_contact(u_m=20.0, thermal_expansivity=6.5e-4, temperature=353.0), LEVEL)
     plain = solve_thermal(_contact(u_m=20.0), LEVEL)
     wet = rolling.wet
@@ -126,10 +126,10 @@ def test_an_expanding_film_carries_its_density_on_the_couette_factor_and_the_wor
     sliding = solve_thermal(_contact(S=1.0, eyring_stress=5e6, thermal_expansivity=6.5e-4, temperature=353.0), LEVEL)
     before = solve_thermal(_contact(S=1.0, eyring_stress=5e6), LEVEL)
     assert sliding.record.converged and sliding.cross_film
-    assert sliding.film_reduction == pytest.approx(0.947, abs=3e-3) and before.film_reduction == pytest.approx(
-        0.888, abs=3e-3)
+    assert sliding.film_reduction == pytest.approx(0.944, abs=3e-3) and before.film_reduction == pytest.approx(
+        0.885, abs=3e-3)
     assert sliding.minimum_film_reduction > before.minimum_film_reduction
-    assert sliding.traction_coefficient == pytest.approx(0.0281, abs=5e-4)
+    assert sliding.traction_coefficient == pytest.approx(0.0278, abs=5e-4)
 
 
 def test_the_compression_work_does_not_depend_on_where_the_energy_grid_meets_the_outlet_spike():
@@ -421,12 +421,13 @@ def test_thermal_transient_at_constant_conditions_settles_on_the_steady_thermal_
     """Held at one load, radius and speeds, the thermal transient march (lagged coupling, one energy solve per
     step; the flow and Couette factors of the film's viscosity profile) settles on the steady thermal solution:
     films and traction to 1e-4 after 40 steps of 20 us (measured at S = 0.5: h_c 9e-6, h_min 3e-5, traction 2e-5;
-    S = 0.05: 1e-5), the film temperature to 1e-3 (1e-4 and 2e-4)."""
+    S = 0.05: 1e-5), the film temperature to 1e-3 (1e-4 and 2e-4). The march's domain is [-4, 1.5] in units of its
+    reference half-width (automatic_transient_domain), so the steady solve is given that one."""
     from camcontact.ehl.line_thermal import thermal_transient_cycle
 
     times = np.arange(40) * 2e-5
     for S in (0.05, 0.5):
-        contact = _contact(S=S, eyring_stress=5e6)
+        contact = _contact(S=S, eyring_stress=5e6, domain=(-4.0, 1.5))
         steady = solve_thermal(contact, LEVEL)
         march = thermal_transient_cycle(times, contact.w, contact.R, contact.u1, contact.u2, contact=contact,
                                         levels=LEVEL)

@@ -183,13 +183,14 @@ def test_thermal_transient_films_settle_on_the_steady_thermal_film():
     on the steady thermal solution of the same contact (solve_thermal; last angle within 1e-4) with its film
     temperature rise (1.66 K: rolling heats only through the inlet's back-flow shear); the step's outputs are
     complete. (With sliding and a Newtonian film without limiting shear stress the rise runs to 100-300 K: the
-    scenes bound the film by the traction model's limiting shear stress, with_traction_rheology.)"""
+    scenes bound the film by the traction model's limiting shear stress, with_traction_rheology.) The model's domain
+    [-4, 1.5] is the march's (units of its reference half-width) and the steady solve's."""
     from camcontact.ehl.line_thermal import solve_thermal
 
     oil = cc.Lubricant(name="Tsuha 2015", alpha="2.2e-8 1/Pa", roelands_z=0.68, thermal_conductivity="0.14 W/(m*K)",
                        thermoviscous_coefficient="0.03 1/K", specific_heat="2000 J/(kg*K)", density="870 kg/m^3")
     state = oil.state(None)
-    model = attrs.evolve(registry.get("film_models", "multigrid", levels=5), thermal=True)
+    model = attrs.evolve(registry.get("film_models", "multigrid", levels=5, domain=(-4.0, 1.5)), thermal=True)
     n, w, R, u1, u2 = 12, 1.5e5, 0.01, 2.0, 2.0
     effusivity = (12900.0, 12900.0)
     out = thermal_transient_films(model, np.full(n, w), np.full(n, R), E_STEEL, np.full(n, u1), np.full(n, u2),
