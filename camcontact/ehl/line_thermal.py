@@ -427,6 +427,12 @@ LAYER_NODES = 900
 #: temperature change [K] below which they stop
 LAYER_SWEEPS = 12
 LAYER_TOLERANCE = 1e-4
+#: while the fixed point is far from its own: the sweeps stop at a temperature change of SWEEP_SHARE x the last
+#: iteration's mean |d ln phi| / beta (the temperature error that moves ln phi by that share of the iteration's own
+#: change), between LAYER_TOLERANCE and LOOSEST_SWEEPS [K]; the iteration that meets the flow tolerance is redone
+#: with the sweeps to LAYER_TOLERANCE before it counts as converged
+SWEEP_SHARE = 0.1
+LOOSEST_SWEEPS = 1.0
 
 
 def _collocation(points: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -477,11 +483,13 @@ def _antiderivative_matrix(zeta: np.ndarray) -> np.ndarray:
 
 
 def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: bool, tau0: float, state: dict,
-            kernels: dict, scales: dict | None = None, cross_film: bool = True) -> dict:
+            kernels: dict, scales: dict | None = None, cross_film: bool = True,
+            sweep_tolerance: float = LAYER_TOLERANCE) -> dict:
     """Temperature, stress and flow-factor fields of ``solution`` from the layered energy model (sweeps warm-started
     from ``state``, which keeps the temperatures between iterations); ``scales`` (b, p_h, h_scale of the solution's
     X, P, H; default: the contact's Hertz scales); ``cross_film``: the viscosity varies across the film with its
-    temperature (Yang & Wen's generalised Reynolds terms), else uniform at the film's mean temperature."""
+    temperature (Yang & Wen's generalised Reynolds terms), else uniform at the film's mean temperature;
+    ``sweep_tolerance`` [K]: the sweeps stop at that change of the temperatures (:data:`SWEEP_SHARE`)."""
     problem = solution.problem
     scales = scales or problem.scales(contact.R, contact.w, contact.E_reduced)
     b, p_h, h_scale = scales["b"], scales["p_h"], scales["h_scale"]
@@ -533,13 +541,13 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
             down, bad_down = kernels["layer_sweep"](1, *args)
             up, bad_up = kernels["layer_sweep"](-1, *args)
             change = max(down, up)
-            if change <= LAYER_TOLERANCE:
+            if change <= sweep_tolerance:
                 break
         if bad_down or bad_up:
             failed = 1
             failure = (f"energy sweeps: no film temperature within {_thermal_kernels.MAX_RISE:g} K at "
                        f"{max(bad_down, bad_up)} nodes")
-        elif change > LAYER_TOLERANCE:
+        elif change > sweep_tolerance:
             unsettled = True
             failure = f"energy sweeps: {LAYER_SWEEPS} sweep pairs left a change of {change:.3g} K"
         profile = np.column_stack([np.interp(X, Xe, T[:, j]) for j in range(LAYER_POINTS)])
@@ -798,8 +806,16 @@ def _iterate(contact: ThermalLineContact, levels: int, *, thermal: bool, non_new
         previous = None
         history: list = []
         first = len(changes)
+        loose = False  # this iteration's sweeps stopped short of LAYER_TOLERANCE
         for _ in range(max_iterations):
-            fields = _layers(contact, solution, thermal, tau0, state, kernels, cross_film=cross_film)
+            sweep_tolerance = LAYER_TOLERANCE
+            if len(changes) > first and not loose and contact.beta > 0.0:
+                sweep_tolerance = min(LOOSEST_SWEEPS, max(LAYER_TOLERANCE,
+                                                          SWEEP_SHARE * changes[-1] / contact.beta))
+            elif loose:
+                loose = False  # the converged-looking iteration again, with the sweeps to LAYER_TOLERANCE
+            fields = _layers(contact, solution, thermal, tau0, state, kernels, cross_film=cross_film,
+                             sweep_tolerance=sweep_tolerance)
             target = variables(fields)
             if x is None:  # the isothermal start: the Eyring coefficients of its film to begin with
                 x = target.copy()
@@ -825,6 +841,9 @@ def _iterate(contact: ThermalLineContact, levels: int, *, thermal: bool, non_new
                                        _record(changes, loads, works, start, False, "non-finite flow factor", levels,
                                                solution))
             if change <= flow_tolerance and (settled or largest <= flow_tolerance):
+                if sweep_tolerance > LAYER_TOLERANCE:
+                    loose = True
+                    continue  # the same solution again with the sweeps to LAYER_TOLERANCE
                 if not fields["unsettled"]:
                     converged = True
                     break
