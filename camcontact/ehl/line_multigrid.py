@@ -86,7 +86,7 @@ from .line_solution import ConvergenceRecord, LineEHLSolution
 
 __all__ = ["COARSEST_SPACING", "MONITOR_RULES", "RUNAWAY_RESIDUAL", "STEADY_COARSEST_SPACING", "WARM_RULES",
            "LineHierarchy", "MultigridSettings", "WarmStart", "coarsest_level", "extrapolated_start", "inlet_mapped",
-           "solve_multigrid"]
+           "solve_multigrid", "with_coarsest"]
 
 #: the transient march's coarsest grid has at most this spacing (units of b_r; :mod:`camcontact.ehl.line_transient`).
 #: A coarser one (wide domains: reversal, squeeze) slows the H0 correction: measured convergence factor 0.3 per
@@ -109,6 +109,14 @@ def coarsest_level(domain, spacing: float = COARSEST_SPACING) -> int:
         level += 1
     return level
 
+
+def with_coarsest(settings: MultigridSettings, problem: LineEHLProblem, levels: int) -> MultigridSettings:
+    """``settings`` with ``cycle_coarsest`` None replaced by :func:`coarsest_level` of the problem's domain at
+    :data:`STEADY_COARSEST_SPACING`, below the finest level ``levels`` (the transient march gives its own)."""
+    if settings.cycle_coarsest is not None:
+        return settings
+    coarsest = coarsest_level(problem.domain, STEADY_COARSEST_SPACING)
+    return attrs.evolve(settings, cycle_coarsest=max(1, min(coarsest, int(levels) - 1)))
 
 
 @attrs.frozen
@@ -240,7 +248,7 @@ class _Grids:
 @functools.lru_cache(maxsize=32)
 def _grids(domain: tuple, levels: int, deformation: str, cycle_coarsest: int, compiled: bool) -> _Grids:
     """The shared :class:`_Grids` of a domain (measured: building them took 1.4 ms of a 12 ms warm-started level-8
-    solve of the LS-1 cam cycle, whose 180 lift angles share four domains, :func:`~camcontact.models.film_multigrid.
+    solve of the LS-1 cam cycle, whose lift angles share a few domains, :func:`~camcontact.ehl.line_domain.
     automatic_domain`)."""
     return _Grids(domain, levels, deformation, cycle_coarsest, compiled)
 
@@ -259,10 +267,7 @@ class LineHierarchy:
 
     def __init__(self, problem: LineEHLProblem, levels: int, settings: MultigridSettings, compiled: bool):
         self.problem = problem
-        if settings.cycle_coarsest is None:
-            coarsest = coarsest_level(problem.domain, STEADY_COARSEST_SPACING)
-            settings = attrs.evolve(settings, cycle_coarsest=max(1, min(coarsest, levels - 1)))
-        self.settings = settings
+        self.settings = settings = with_coarsest(settings, problem, levels)
         self.kernel = _kernels.compiled if compiled else _kernels.PY.__getitem__
         self.cycle_kernel = _fas_kernels.compiled("fas_cycle") if compiled else _fas_kernels.fas_cycle
         self.grids = _grids(tuple(float(x) for x in problem.domain), int(levels), settings.deformation,
@@ -515,7 +520,8 @@ def solve_multigrid(
     if problem.supply is not None:
         raise InputError(f"solve_multigrid: the problem has a starved inlet (supply = {problem.supply!r}); solve it "
                          "with camcontact.ehl.line_starved.solve_starved, which finds its meniscus")
-    settings = settings or MultigridSettings()
+    # resolved before the attempts, so that their settings (and the record's account of them) are concrete
+    settings = with_coarsest(settings or MultigridSettings(), problem, levels)
     if initial is not None and before is not None:
         initial = extrapolated_start(initial, before, problem, levels)
     starts: dict = {}  # the full-multigrid start solutions, shared by the attempts (:func:`_shared_start`)

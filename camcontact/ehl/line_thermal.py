@@ -521,6 +521,7 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
     profile = np.zeros((n, LAYER_POINTS))
     failed = 0
     unsettled = False
+    sweep_change = 0.0  # the temperature change [K] of the last sweep pair (0: no energy equation)
     if thermal:
         if state.get("T") is None or state["T"].shape[0] != Xe.size:
             state.update(T=np.zeros((Xe.size, LAYER_POINTS)), q1=np.zeros(Xe.size), q2=np.zeros(Xe.size))
@@ -543,6 +544,7 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
             change = max(down, up)
             if change <= sweep_tolerance:
                 break
+        sweep_change = change
         if bad_down or bad_up:
             failed = 1
             failure = (f"energy sweeps: no film temperature within {_thermal_kernels.MAX_RISE:g} K at "
@@ -572,7 +574,7 @@ def _layers(contact: ThermalLineContact, solution: LineEHLSolution, thermal: boo
     bounded = spread > _thermal_kernels.PROFILE_BOUND if cross_film else np.zeros(n, dtype=bool)
     return {"Tm": Tm, "T1": profile[:, 0], "T2": profile[:, -1], "tau": tau, "phi": phi * a,
             "used": used, "a": a, "k": k, "c": c, "Q": Q, "x": X * b, "p": P * p_h, "h": h, "wet": wet,
-            "bounded": bounded, "failed": failed, "unsettled": unsettled,
+            "bounded": bounded, "failed": failed, "unsettled": unsettled, "sweep_change": sweep_change,
             "failure": failure if failed or unsettled else ""}
 
 
@@ -806,14 +808,13 @@ def _iterate(contact: ThermalLineContact, levels: int, *, thermal: bool, non_new
         previous = None
         history: list = []
         first = len(changes)
-        loose = False  # this iteration's sweeps stopped short of LAYER_TOLERANCE
+        tight = False  # this pass's sweeps must reach LAYER_TOLERANCE (the flow factors looked settled)
         for _ in range(max_iterations):
             sweep_tolerance = LAYER_TOLERANCE
-            if len(changes) > first and not loose and contact.beta > 0.0:
+            if len(changes) > first and not tight and thermal and contact.beta > 0.0:
                 sweep_tolerance = min(LOOSEST_SWEEPS, max(LAYER_TOLERANCE,
                                                           SWEEP_SHARE * changes[-1] / contact.beta))
-            elif loose:
-                loose = False  # the converged-looking iteration again, with the sweeps to LAYER_TOLERANCE
+            tight = False
             fields = _layers(contact, solution, thermal, tau0, state, kernels, cross_film=cross_film,
                              sweep_tolerance=sweep_tolerance)
             target = variables(fields)
@@ -841,13 +842,13 @@ def _iterate(contact: ThermalLineContact, levels: int, *, thermal: bool, non_new
                                        _record(changes, loads, works, start, False, "non-finite flow factor", levels,
                                                solution))
             if change <= flow_tolerance and (settled or largest <= flow_tolerance):
-                if sweep_tolerance > LAYER_TOLERANCE:
-                    loose = True
-                    continue  # the same solution again with the sweeps to LAYER_TOLERANCE
-                if not fields["unsettled"]:
+                if fields["sweep_change"] <= LAYER_TOLERANCE:
                     converged = True
                     break
-                continue  # the flow factors have settled, the temperatures not yet: more sweeps, same solution
+                # the flow factors have settled, the temperatures not yet to LAYER_TOLERANCE (loose sweeps, or
+                # LAYER_SWEEPS pairs did not reach it): the same solution again, with tight sweeps
+                tight = True
+                continue
             residual = target - x
             proposal = _anderson(history, x, residual, relaxation)
             step = 1.0

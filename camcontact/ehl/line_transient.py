@@ -79,7 +79,7 @@ from ..errors import ConvergenceError, ConvergenceWarning, InputError
 from .attempts import run_ladder
 from .cycle_monitor import CycleMonitor
 from .line_multigrid import WARM_RULES
-from .line_multigrid import COARSEST_SPACING, ROBUST, LineHierarchy, MultigridSettings, coarsest_level, solve_multigrid
+from .line_multigrid import ROBUST, LineHierarchy, MultigridSettings, coarsest_level, solve_multigrid
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
 from .line_starved import solve_starved
@@ -364,9 +364,11 @@ class TransientLineSolver:
         self.levels = int(levels)
         self.scheme = scheme
         self.tolerance = float(tolerance)
+        coarsest = max(1, min(coarsest_level(scaling.problem.domain), int(levels) - 1))
         if settings is None:
-            settings = MultigridSettings(cycle="V", pre_sweeps=2, lean=False,
-                                         cycle_coarsest=min(coarsest_level(scaling.problem.domain), int(levels) - 1))
+            settings = MultigridSettings(cycle="V", pre_sweeps=2, lean=False, cycle_coarsest=coarsest)
+        elif settings.cycle_coarsest is None:  # the march's coarse spacing (COARSEST_SPACING), not the steady one
+            settings = attrs.evolve(settings, cycle_coarsest=coarsest)
         self.settings = settings
         self.strict = strict
         self.compiled = compiled

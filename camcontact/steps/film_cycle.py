@@ -29,7 +29,8 @@ from .kinematics import degrees_text
 
 __all__ = [
     "MIN_CHAIN", "STEADY_M_LIMIT", "chain_count", "cycle_ehl_groups", "cycle_inlet_thermal", "numerical_film_details",
-    "march_laws", "march_order", "quasi_steady_films", "solve_chain", "solve_numerically", "spike_height",
+    "march_domain", "march_laws", "march_order", "quasi_steady_films", "solve_chain", "solve_numerically",
+    "spike_height",
     "steadiest_angle", "thermal_transient_films", "transient_films",
 ]
 
@@ -207,6 +208,21 @@ def _in_order(order, *series) -> list[np.ndarray]:
     return out
 
 
+def march_domain(film_model, u_m) -> tuple | None:
+    """The transient march's domain [X_a, X_b] (units of its reference half-width) from the film model's ``domain``:
+    as given while the entrainment u_m [m/s] keeps one direction, made symmetric, (min(X_a, -X_b), max(X_b, -X_a)),
+    when it reverses (either end is then the inlet); None (the model's domain None): the march's automatic domain
+    (:func:`~camcontact.ehl.line_transient.automatic_transient_domain`)."""
+    domain = getattr(film_model, "domain", None)
+    if domain is None:
+        return None
+    X_a, X_b = (float(x) for x in domain)
+    u = np.asarray(u_m, dtype=float)
+    if np.any(u > 0.0) and np.any(u < 0.0):
+        return (min(X_a, -X_b), max(X_b, -X_a))
+    return (X_a, X_b)
+
+
 @step("film", provides=(*FILM_OUTPUTS, "x_min"),
       model=lambda film_model: f"{model_name(film_model)} (transient, squeeze)", version=model_version,
       check=check_squeeze)
@@ -215,9 +231,10 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
     """Films [m] over the turn from one transient march with the squeeze term (the ``squeeze`` effect):
     implicit BDF2 steps from angle to angle through any entrainment reversal, from the steady film at
     the steadiest angle; needs contact and a constant cam speed at every angle. The march's domain is the film
-    model's ``domain`` (units of the reference half-width, :func:`~camcontact.ehl.line_transient.transient_cycle`)
-    or :func:`~camcontact.ehl.line_transient.automatic_transient_domain` (the inlet at -4: a steady film's
-    automatic domain lengthens the inlet of thick films, so at H_c above about 0.08 the march's films are up to
+    model's ``domain`` (units of the reference half-width, :func:`~camcontact.ehl.line_transient.transient_cycle`;
+    symmetric through a reversal, :func:`march_domain`) or
+    :func:`~camcontact.ehl.line_transient.automatic_transient_domain` (the inlet at -4: a steady film's automatic
+    domain lengthens the inlet of thick films, so at H_c above about 0.08 the march's films are up to
     0.8 :func:`~camcontact.ehl.line_domain.inlet_tail_fraction` thinner than the steady ones).
     Optional ``oil_layer`` [m]: a starved inflow (the film model's cavitation ``"mass_conserving"``;
     :class:`~camcontact.ehl.line_transient.TransientLineSolver`), whose march starts from the steady starved film;
@@ -231,7 +248,7 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
         **march_laws(lubricant_state, piezoviscosity, alpha_effective), density=density_law,
         levels=film_model.levels, tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict,
         cavitation=getattr(film_model, "cavitation", "reynolds"), oil_layer=inputs.get("oil_layer"),
-        domain=getattr(film_model, "domain", None))
+        domain=march_domain(film_model, u))
     h_c, h_min, x_min, converged = _in_order(order, result.h_c, result.h_min, result.x_min,
                                              np.asarray(result.converged, dtype=bool))
     messages = _in_order(order, np.array([record.message for record in result.records], dtype=object))[0]
@@ -287,7 +304,7 @@ def thermal_transient_films(film_model, w, R, E_reduced, u_cam, u_follower, eta0
         levels=film_model.levels, thermal=film_model.thermal, non_newtonian=film_model.non_newtonian,
         tolerance=max(film_model.tolerance, 1e-6), strict=film_model.strict,
         cavitation=getattr(film_model, "cavitation", "reynolds"), oil_layer=inputs.get("oil_layer"),
-        domain=getattr(film_model, "domain", None))
+        domain=march_domain(film_model, u))
     films = result.films
     energy = np.asarray(result.thermal, dtype=bool)  # the energy equation ran after the instant's film
     heated = np.concatenate([[False], energy[:-1]])  # the instant's film took the last instant's flow factors

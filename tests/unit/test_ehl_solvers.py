@@ -163,6 +163,9 @@ def test_automatic_domain_is_rounded_up_so_that_neighbours_share_it():
         assert rounded_in >= rounded and inlet_tail_fraction(inlet, H) <= INLET_TAIL
         assert rounded_in == rounded or inlet_tail_fraction(inlet / DOMAIN_RATIO, H) > INLET_TAIL
     assert automatic_domain(3.0, 18.0) == automatic_domain(3.05, 18.1)
+    assert automatic_domain(3.0, 18.0, inlet_tail=None)[0] == pytest.approx(-4.0 * DOMAIN_RATIO**3)  # earlier rule
+    with pytest.raises(ValueError, match="inlet_tail"):
+        automatic_domain(3.0, 18.0, inlet_tail=0.0)
 
 
 @pytest.mark.parametrize("M, L", [(10.5, 13.1), (3.33, 23.3)])

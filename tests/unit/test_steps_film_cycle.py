@@ -253,3 +253,14 @@ def test_cycle_inlet_thermal_per_angle_with_reversal():
     assert out["thermal_factor"][1] == pytest.approx(1 / (1 + 0.241 * (1 + 14.8 * Z[1] ** 0.83) * L[1] ** 0.64))
     assert out["thermal_factor"][2] == 1.0  # u1 + u2 = 0: no entrainment, no inlet heating
     np.testing.assert_array_equal(out["thermal_valid"], [True, False, False])  # Z = 0, 3, inf
+
+
+def test_a_reversing_march_takes_the_model_domain_symmetric():
+    """The film model's domain is the march's as given while the entrainment keeps its direction; through a reversal
+    either end becomes the inlet, so it is made symmetric ([-4, 1.5] -> [-4, 4]); None leaves the march its own."""
+    from camcontact.steps.film_cycle import march_domain
+
+    model = registry.get("film_models", "multigrid", levels=5, domain=(-4.0, 1.5))
+    assert march_domain(model, np.array([1.0, 2.0, 0.0])) == (-4.0, 1.5)
+    assert march_domain(model, np.array([1.0, -2.0])) == (-4.0, 4.0)
+    assert march_domain(registry.get("film_models", "multigrid", levels=5), np.array([1.0, -2.0])) is None
