@@ -26,7 +26,9 @@ machine was), no step unconverged; h_min 651 / 638 nm against 671 / 660 nm isoth
 (with the viscosity uniform across the film, another day: 9.5 s, 23.8 s and 21.2 s, energy 14.1-14.2 s). With the
 energy equation carrying the flow across the film's layers (2026-11-29): isothermal 6.1 / 6.3 s, thermal 22.7 s rolling
 and 23.7 s with 5 % slip (energy 15.8 / 18.5 s), h_min 652 / 639 nm, the film up to 13 / 20 K warmer, no step
-unconverged. In the plot,
+unconverged. With the march's inlet from the steady automatic domain (line_transient.march_inlet; one run,
+2026-11-29): isothermal 4.8 / 4.7 s, thermal 21.2 / 18.6 s (energy 15.2 / 14.3 s), h_min 659 / 646 nm against
+680 / 668 nm isothermal, the film up to 13 / 19 K warmer, no step unconverged. In the plot,
 the rolling case's largest film temperature rise jitters by a few kelvin from step to step: at level 8 the energy
 equation runs on every second node (at most 900, ``line_thermal.LAYER_NODES``) and the peak behind the spike falls on
 or between them; it does not change with the film's cycles or tolerance (V or F, 1e-6 or 1e-8: the same to 0.01 K),

@@ -80,6 +80,7 @@ from .attempts import run_ladder
 from .cycle_monitor import CycleMonitor
 from .line_multigrid import WARM_RULES
 from .line_multigrid import ROBUST, LineHierarchy, MultigridSettings, coarsest_level, solve_multigrid
+from .line_domain import automatic_domain
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
 from .line_starved import solve_starved
@@ -767,13 +768,38 @@ class TransientLineSolver:
 
 
 # ----------------------------------------------------------------------------- cam-cycle driver
-def automatic_transient_domain(u_m: np.ndarray) -> tuple[float, float]:
-    """[X_a, X_b] in units of b_r: (-4, 1.5) if u_m >= 0 throughout, (-1.5, 4) if <= 0, else (-4, 4)."""
+def automatic_transient_domain(u_m: np.ndarray, inlet: float = 4.0) -> tuple[float, float]:
+    """[X_a, X_b] in units of b_r: (-inlet, 1.5) if u_m >= 0 throughout, (-1.5, inlet) if <= 0, else (-4, 4) (a
+    reversal: either end is the inlet; :func:`march_inlet` gives ``inlet``)."""
     if np.all(u_m >= 0.0):
-        return (-4.0, 1.5)
+        return (-inlet, 1.5)
     if np.all(u_m <= 0.0):
-        return (-1.5, 4.0)
+        return (-1.5, inlet)
     return (-4.0, 4.0)
+
+
+def march_inlet(w: np.ndarray, R: np.ndarray, u_m: np.ndarray, *, E_reduced: float, eta0: float, alpha: float,
+                elastic: bool, reference: dict) -> float:
+    """The inlet length [b_r] a march in one direction needs: the largest over its instants (u_m != 0) of the steady
+    automatic domain's inlet (:func:`camcontact.ehl.line_domain.automatic_domain`, in units of the instant's own
+    half-width b) times b/b_r, at least 4. M and L are taken to three digits, so that the instants of a smooth
+    cycle share the domain's cached evaluations (its reaches are rounded up to powers of 2^(1/4) anyway)."""
+    moving = u_m != 0.0
+    if not np.any(moving):
+        return 4.0
+    w, R, u = w[moving], R[moving], np.abs(u_m[moving])
+    U = eta0 * u / (E_reduced * R)
+    M = w / (E_reduced * R) * (2.0 * U) ** -0.5
+    L = alpha * E_reduced * (2.0 * U) ** 0.25
+    b_ratio = np.sqrt(w * R / (reference["w"] * reference["R"]))
+    inlet = 4.0
+    for M_i, L_i, ratio in zip(_three_digits(M), _three_digits(L), b_ratio):
+        inlet = max(inlet, -automatic_domain(M_i, L_i, elastic)[0] * ratio)
+    return inlet
+
+
+def _three_digits(values: np.ndarray) -> list[float]:
+    return [float(f"{v:.3g}") for v in values]
 
 
 def _as_series(name, value, n):
@@ -825,7 +851,7 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         ``{"w": ..., "R": ..., "u": ...}`` (SI); default: w and R of the instant with the
         largest Hertz half-width, u = max |u_m|.
     domain : (float, float), optional
-        [X_a, X_b] in units of b_r; default :func:`automatic_transient_domain`.
+        [X_a, X_b] in units of b_r; default :func:`automatic_transient_domain` with the inlet :func:`march_inlet`.
     initial : (P, H0), optional
         Start state on the reference grid (P = p/p_r at the nodes, H0) instead of the steady start.
     keep_fields : bool
@@ -876,7 +902,9 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         j = int(np.argmax(widths))
         reference = {"w": float(w[j]), "R": float(R[j]), "u": float(np.abs(u_m).max())}
     if domain is None:
-        domain = automatic_transient_domain(u_m)
+        inlet = march_inlet(w, R, u_m, E_reduced=E_reduced, eta0=eta0, alpha=alpha if alpha > 0 else 0.0,
+                            elastic=elastic, reference=reference)
+        domain = automatic_transient_domain(u_m, inlet)
     scaling = TransientScaling.from_reference(R=reference["R"], w=reference["w"], u=reference["u"],
                                               E_reduced=E_reduced, eta0=eta0, alpha=alpha, z=z, viscosity=viscosity,
                                               density=density, p0=p0, elastic=elastic, domain=tuple(domain),

@@ -233,9 +233,8 @@ def transient_films(film_model, w, R, E_reduced, u_m, eta0, alpha_effective, lub
     the steadiest angle; needs contact and a constant cam speed at every angle. The march's domain is the film
     model's ``domain`` (units of the reference half-width, :func:`~camcontact.ehl.line_transient.transient_cycle`;
     symmetric through a reversal, :func:`march_domain`) or
-    :func:`~camcontact.ehl.line_transient.automatic_transient_domain` (the inlet at -4: a steady film's automatic
-    domain lengthens the inlet of thick films, so at H_c above about 0.08 the march's films are up to
-    0.8 :func:`~camcontact.ehl.line_domain.inlet_tail_fraction` thinner than the steady ones).
+    :func:`~camcontact.ehl.line_transient.automatic_transient_domain` (in one direction the inlet of the steady
+    automatic domain, :func:`~camcontact.ehl.line_transient.march_inlet`; through a reversal [-4, 4]).
     Optional ``oil_layer`` [m]: a starved inflow (the film model's cavitation ``"mass_conserving"``;
     :class:`~camcontact.ehl.line_transient.TransientLineSolver`), whose march starts from the steady starved film;
     ``x_min`` [m]: where the film is thinnest, from the contact centre, positive in the direction of u_m > 0."""

@@ -67,10 +67,12 @@ def test_sudden_load_step_is_stable_and_settles_on_the_new_steady_film():
     times = np.arange(n) * dt
     w = np.where(np.arange(n) < 5, W, 2 * W)
     result = transient_cycle(times, w, R, U, levels=6, **LUBRICANT)
-    assert result.scaling.w == 2 * W and result.scaling.problem.domain == (-4.0, 1.5)
+    domain = result.scaling.problem.domain  # the automatic inlet (march_inlet) of the load before the step
+    assert result.scaling.w == 2 * W and domain[0] < -4.0 and domain[1] == 1.5
     assert result.converged.all()
     assert np.all(result.h_min > 0) and np.all(np.isfinite(result.p_max))
-    steady = solve_multigrid(LineEHLProblem.from_contact(R=R, w=2 * W, u_m=U, **LUBRICANT), 6, tolerance=1e-8)
+    steady = solve_multigrid(LineEHLProblem.from_contact(R=R, w=2 * W, u_m=U, domain=domain, **LUBRICANT), 6,
+                             tolerance=1e-8)
     h_scale = result.scaling.h_scale
     assert result.h_min[-1] / h_scale == pytest.approx(steady.H_min, rel=1e-3)
     assert result.h_c[-1] / h_scale == pytest.approx(steady.H_c, rel=1e-3)

@@ -421,13 +421,13 @@ def test_thermal_transient_at_constant_conditions_settles_on_the_steady_thermal_
     """Held at one load, radius and speeds, the thermal transient march (lagged coupling, one energy solve per
     step; the flow and Couette factors of the film's viscosity profile) settles on the steady thermal solution:
     films and traction to 1e-4 after 40 steps of 20 us (measured at S = 0.5: h_c 9e-6, h_min 3e-5, traction 2e-5;
-    S = 0.05: 1e-5), the film temperature to 1e-3 (1e-4 and 2e-4). The march's domain is [-4, 1.5] in units of its
-    reference half-width (automatic_transient_domain), so the steady solve is given that one."""
+    S = 0.05: 1e-5), the film temperature to 1e-3 (1e-4 and 2e-4). The march's automatic domain (inlet by
+    march_inlet) is the steady solve's."""
     from camcontact.ehl.line_thermal import thermal_transient_cycle
 
     times = np.arange(40) * 2e-5
     for S in (0.05, 0.5):
-        contact = _contact(S=S, eyring_stress=5e6, domain=(-4.0, 1.5))
+        contact = _contact(S=S, eyring_stress=5e6)
         steady = solve_thermal(contact, LEVEL)
         march = thermal_transient_cycle(times, contact.w, contact.R, contact.u1, contact.u2, contact=contact,
                                         levels=LEVEL)
