@@ -36,6 +36,7 @@ import math
 import numpy as np
 from scipy.integrate import quad
 
+from ..errors import InputError
 from .film_formulas import moes_line_film
 
 __all__ = ["DOMAIN_RATIO", "INLET_TAIL", "THIN_FILM", "automatic_domain", "inlet_tail_fraction"]
@@ -67,7 +68,7 @@ def inlet_tail_fraction(X_a: float, H: float, elastic: bool = True) -> float:
 
     X_a <= -1 in units of b; H > 0 the central film in units of b^2/R."""
     if X_a > -1.0 or not H > 0.0:
-        raise ValueError(f"inlet_tail_fraction: needs X_a <= -1 and H > 0, got X_a = {X_a!r}, H = {H!r}")
+        raise InputError(f"inlet_tail_fraction: needs X_a <= -1 and H > 0, got X_a = {X_a!r}, H = {H!r}")
 
     def integrand(X):
         g = _gap(X, elastic)
@@ -102,15 +103,14 @@ def automatic_domain(M: float, L: float, elastic: bool = True,
     by node (:func:`camcontact.ehl.line_multigrid.extrapolated_start`), and the solves share their grid tables.
     """
     if inlet_tail is not None and not 0.0 < inlet_tail < 1.0:
-        raise ValueError(f"automatic_domain: inlet_tail = {inlet_tail!r}; allowed: None or 0 < inlet_tail < 1")
+        raise InputError(f"automatic_domain: inlet_tail = {inlet_tail!r}; allowed: None or 0 < inlet_tail < 1")
     H = float(moes_line_film(M, L, elasticity=elastic)) * math.pi / (8.0 * M)
     reach = math.sqrt(2.0 * H)
     if reach > 1.0:
         reach = DOMAIN_RATIO ** math.ceil(math.log(reach) / math.log(DOMAIN_RATIO) - 1e-9)
     reach = max(reach, 1.0)
     inlet = reach
-    if H <= THIN_FILM and (inlet_tail is None or inlet_tail >= 1e-3):
-        return (-4.0 * inlet, 1.5 * reach)
-    while inlet_tail is not None and inlet_tail_fraction(-4.0 * inlet, H, elastic) > inlet_tail:
-        inlet *= DOMAIN_RATIO
+    if inlet_tail is not None and (H > THIN_FILM or inlet_tail < 1e-3):
+        while inlet_tail_fraction(-4.0 * inlet, H, elastic) > inlet_tail:
+            inlet *= DOMAIN_RATIO
     return (-4.0 * inlet, 1.5 * reach)

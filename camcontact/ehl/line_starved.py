@@ -21,8 +21,7 @@ domain [X_m, X_b] (:func:`camcontact.ehl.line_multigrid.solve_multigrid`, warm-s
 by full multigrid if that does not converge), bracketed by moving X_m towards the Hertz inlet edge (by the secant
 of the last two trials on ln(-1 - X_m), stretched by :data:`BRACKET_OVERSHOOT`, the step between :data:`MENISCUS_STEP`
 and :data:`LARGEST_STEP` of the distance) and found by regula falsi (Illinois) on ln(-1 - X_m) until |F/H_oil - 1| is
-below
-ten times the tolerance (:func:`find_meniscus`; the thermal solver's starved inlet,
+below ten times the tolerance (:func:`find_meniscus`; the thermal solver's starved inlet,
 :func:`camcontact.ehl.line_thermal.solve_thermal`, searches its meniscus with the same function over thermal
 solves). The meniscus is a continuous unknown, not a grid node, so that the flux matches the supply to that
 tolerance. The solution is returned on the reduced domain's grid continued upstream at the same

@@ -78,9 +78,10 @@ import numpy as np
 from ..errors import ConvergenceError, ConvergenceWarning, InputError
 from .attempts import run_ladder
 from .cycle_monitor import CycleMonitor
+from .groups import hamrock_line, moes_line
+from .line_domain import automatic_domain
 from .line_multigrid import WARM_RULES
 from .line_multigrid import ROBUST, LineHierarchy, MultigridSettings, coarsest_level, solve_multigrid
-from .line_domain import automatic_domain
 from .line_problem import ROELANDS_P0, LineEHLProblem
 from .line_solution import ConvergenceRecord
 from .line_starved import solve_starved
@@ -235,8 +236,6 @@ class _TransientHierarchy(LineHierarchy):
 
 
 # ----------------------------------------------------------------------------- the marcher
-
-
 #: the stop rules of a step's cycles: a warm-started steady solve's (:data:`camcontact.ehl.line_multigrid.WARM_RULES`)
 #: without its load floor (converged when the changes of (H_min, H0) fall below the tolerance and the load error
 #: below 10 x the tolerance, or when fast-contracting cycles leave less than the tolerance to change; measured on
@@ -787,10 +786,8 @@ def march_inlet(w: np.ndarray, R: np.ndarray, u_m: np.ndarray, *, E_reduced: flo
     moving = u_m != 0.0
     if not np.any(moving):
         return 4.0
-    w, R, u = w[moving], R[moving], np.abs(u_m[moving])
-    U = eta0 * u / (E_reduced * R)
-    M = w / (E_reduced * R) * (2.0 * U) ** -0.5
-    L = alpha * E_reduced * (2.0 * U) ** 0.25
+    w, R = w[moving], R[moving]
+    M, L = moes_line(*hamrock_line(w, R, E_reduced, u_m[moving], eta0, alpha))
     b_ratio = np.sqrt(w * R / (reference["w"] * reference["R"]))
     inlet = 4.0
     for M_i, L_i, ratio in zip(_three_digits(M), _three_digits(L), b_ratio):
@@ -902,6 +899,7 @@ def transient_cycle(times, w, R, u_m, *, E_reduced: float, eta0: float, alpha: f
         j = int(np.argmax(widths))
         reference = {"w": float(w[j]), "R": float(R[j]), "u": float(np.abs(u_m).max())}
     if domain is None:
+        # (alpha is checked by the scaling below: a bad one reaches it as the isoviscous 0 here)
         inlet = march_inlet(w, R, u_m, E_reduced=E_reduced, eta0=eta0, alpha=alpha if alpha > 0 else 0.0,
                             elastic=elastic, reference=reference)
         domain = automatic_transient_domain(u_m, inlet)
